@@ -1,0 +1,30 @@
+#pragma once
+// The table `triwalk bench` prints: the machine, then one row per figure
+// with the data size it was measured on.
+
+#include <string>
+#include <vector>
+
+namespace triwalk {
+
+struct BenchRow {
+  std::string benchmark;
+  std::string dataSize;
+  std::string figure;
+  std::string notes;
+};
+
+class BenchTable {
+public:
+  void add(BenchRow row);
+  // Markdown table preceded by the machine description.
+  void print(const std::string& glDescription) const;
+
+private:
+  std::vector<BenchRow> rows_;
+};
+
+std::string machineDescription();
+std::string formatNumber(double value, int decimals);
+
+}  // namespace triwalk

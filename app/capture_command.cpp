@@ -1,0 +1,69 @@
+#include "app/commands.h"
+#include "app/scene_loading.h"
+#include "core/errors.h"
+#include "render/dataset_capture.h"
+#include "render/gl_context.h"
+
+#include <cstdio>
+
+namespace triwalk {
+
+void registerCaptureCommand(CLI::App& app) {
+  struct Arguments {
+    std::string scene = "builtin";
+    std::string out;
+    std::string gl = "auto";
+    std::vector<float> area;
+    float eyeHeight = 0.0f;
+    float spacing = 0.0f;
+    CaptureOptions options;
+    SceneImportArguments import;
+  };
+  auto arguments = std::make_shared<Arguments>();
+  CLI::App* command = app.add_subcommand("capture", "Render the dense panorama samples and held-out probes of a scene");
+  command->add_option("--scene", arguments->scene, "builtin, a scene description (.json) or any file Assimp reads")
+      ->capture_default_str();
+  command->add_option("--out", arguments->out, "Output data set directory")->required();
+  command->add_option("--paths", arguments->options.paths, "Number of parallel capture paths")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  command->add_option("--per-path", arguments->options.perPath, "Samples per path")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  command->add_option("--spacing", arguments->spacing,
+                      "Metres between samples and between paths (overrides --paths and --per-path)")
+      ->check(CLI::PositiveNumber);
+  command->add_option("--area", arguments->area, "Sampled rectangle x0,y0,x1,y1 in metres (default: the scene's)")
+      ->delimiter(',')->expected(4);
+  command->add_option("--eye-height", arguments->eyeHeight, "Camera height above the floor, metres (default: the scene's)")
+      ->check(CLI::PositiveNumber);
+  command->add_option("--width", arguments->options.width, "Panorama width in pixels (height = width / 2)")
+      ->capture_default_str();
+  command->add_option("--face-size", arguments->options.faceSize, "Cube face resolution (0: 3/8 of the width)")
+      ->capture_default_str();
+  command->add_option("--probes", arguments->options.probes, "Held-out views at random positions")
+      ->capture_default_str();
+  command->add_option("--seed", arguments->options.seed, "Seed of the probe positions")->capture_default_str();
+  command->add_option("--gl", arguments->gl, "Headless OpenGL: auto, egl or osmesa")->capture_default_str();
+  command->add_flag("--quiet", arguments->options.quiet, "No progress output");
+  addSceneImportOptions(*command, arguments->import);
+
+  command->callback([arguments] {
+    Arguments& a = *arguments;
+    if (!a.area.empty()) a.options.area = glm::vec4(a.area[0], a.area[1], a.area[2], a.area[3]);
+    if (a.eyeHeight > 0.0f) a.options.eyeHeight = a.eyeHeight;
+    if (a.spacing > 0.0f) a.options.spacing = a.spacing;
+    const LoadedScene loaded = loadSceneForCapture(a.scene, a.import);
+    const CapturePlan plan = planCapture(loaded.scene, a.options);
+    std::printf("scene %s: %zu triangles; %d paths x %d samples over [%.2f, %.2f] x [%.2f, %.2f] m at z = %.2f m, "
+                "%d probes, %dx%d\n",
+                loaded.name.c_str(), loaded.scene.triangleCount(), plan.paths, plan.perPath, plan.area.x, plan.area.z,
+                plan.area.y, plan.area.w, plan.eyeZ, a.options.probes, a.options.width, a.options.width / 2);
+    auto context = createHeadlessContext(parseHeadlessBackend(a.gl));
+    const CaptureSummary summary = captureDataset(loaded.scene, loaded.name, a.options, a.out);
+    std::printf("captured %d samples and %d probes into %s in %.1f s (%.2f panoramas/s) with %s\n", summary.samples,
+                summary.probes, a.out.c_str(), summary.seconds,
+                double(summary.samples + summary.probes) / std::max(summary.seconds, 1e-9),
+                context->description().c_str());
+  });
+}
+
+}  // namespace triwalk

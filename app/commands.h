@@ -1,0 +1,12 @@
+#pragma once
+// Each subcommand of the triwalk binary registers itself on the CLI11 app.
+
+#include <CLI/CLI.hpp>
+
+namespace triwalk {
+
+void registerCaptureCommand(CLI::App& app);
+void registerExportPngCommand(CLI::App& app);
+void registerBenchCommand(CLI::App& app);
+
+}  // namespace triwalk

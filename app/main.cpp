@@ -1,0 +1,35 @@
+// triwalk: image-based walkthroughs from triangulated RGB-D panoramas.
+// Thin main: parse the command line, run the chosen subcommand, turn
+// failures into one line on stderr and a non-zero exit status.
+
+#include "app/commands.h"
+#include "core/errors.h"
+#include "render/gl_context.h"
+
+#include <cstdio>
+
+int main(int argc, char** argv) {
+  CLI::App app{"triwalk: select reference panoramas by edge-collapse decimation and walk through them"};
+  app.require_subcommand(1);
+  triwalk::registerCaptureCommand(app);
+  triwalk::registerExportPngCommand(app);
+  triwalk::registerBenchCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return app.exit(error);
+  } catch (const triwalk::InputError& error) {
+    std::fprintf(stderr, "triwalk: error: %s\n", error.what());
+    return 1;
+  } catch (const triwalk::Interrupted&) {
+    std::fprintf(stderr, "triwalk: interrupted; no output written\n");
+    return 130;
+  } catch (const triwalk::GlUnavailable& error) {
+    std::fprintf(stderr, "triwalk: error: OpenGL: %s\n", error.what());
+    return 1;
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "triwalk: error: %s\n", error.what());
+    return 1;
+  }
+  return 0;
+}

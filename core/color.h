@@ -1,0 +1,35 @@
+#pragma once
+// Color spaces: the data set stores linear RGB; errors and PNGs use display
+// values (sRGB-encoded, clamped to [0, 1]), as DESIGN.md fixes.
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace triwalk {
+
+inline float linearToSrgb(float linear) {
+  const float c = std::clamp(linear, 0.0f, 1.0f);
+  return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
+inline float srgbToLinear(float encoded) {
+  const float c = std::clamp(encoded, 0.0f, 1.0f);
+  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+inline glm::vec3 displayColor(glm::vec3 linear) {
+  return {linearToSrgb(linear.r), linearToSrgb(linear.g), linearToSrgb(linear.b)};
+}
+
+inline glm::u8vec3 toBytes(glm::vec3 display) {
+  const glm::vec3 scaled = glm::clamp(display, 0.0f, 1.0f) * 255.0f + 0.5f;
+  return {uint8_t(scaled.r), uint8_t(scaled.g), uint8_t(scaled.b)};
+}
+
+// Perceptually ordered false color for t in [0, 1] (a compact fit of the
+// "turbo" colormap); used for distance images and error heatmaps.
+glm::vec3 falseColor(float t);
+
+}  // namespace triwalk

@@ -1,0 +1,59 @@
+#pragma once
+// Progress of long work on the terminal (count, rate, time left) and clean
+// interruption: Ctrl-C sets a flag that long loops poll between units of
+// work, so they stop without writing partial output.
+
+#include <atomic>
+#include <chrono>
+#include <cstddef>
+#include <mutex>
+#include <string>
+
+namespace triwalk {
+
+// While one exists, SIGINT/SIGTERM request a stop instead of killing the
+// process; a second Ctrl-C kills it as usual.
+class InterruptScope {
+public:
+  InterruptScope();
+  ~InterruptScope();
+  InterruptScope(const InterruptScope&) = delete;
+  InterruptScope& operator=(const InterruptScope&) = delete;
+};
+
+bool interruptRequested();
+void requestInterrupt();  // as if Ctrl-C was pressed (tests, viewer)
+void clearInterrupt();
+// Throws Interrupted when a stop was requested.
+void throwIfInterrupted();
+
+class ProgressReporter {
+public:
+  // total may be 0 when unknown (no time left is shown then).
+  ProgressReporter(std::string label, size_t total, bool quiet = false);
+  ~ProgressReporter();
+
+  void advance(size_t count = 1);  // thread-safe
+  void setStatus(const std::string& status);
+  void setTotal(size_t total);
+  void finish();
+  double elapsedSeconds() const;
+
+private:
+  void print(bool final);
+
+  std::string label_;
+  std::atomic<size_t> done_{0};
+  size_t total_ = 0;
+  bool quiet_ = false;
+  bool interactive_ = false;
+  bool finished_ = false;
+  std::string status_;
+  std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point lastPrint_;
+  std::mutex mutex_;
+};
+
+std::string formatDuration(double seconds);
+
+}  // namespace triwalk

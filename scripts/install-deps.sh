@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Installs the Debian bookworm packages triwalk needs, only those missing.
+# Usage: scripts/install-deps.sh [build|test]
+#   build: compilers and libraries for the triwalk binary and its tests
+#   test:  build + Xvfb for the viewer test + the real scenes of issue 7
+set -euo pipefail
+
+profile="${1:-build}"
+
+packages=(
+  build-essential cmake ninja-build pkg-config git
+  libglm-dev libglfw3-dev libegl-dev libgl-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
+  libimgui-dev libstb-dev libopenexr-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
+  libassimp-dev libtbb-dev libcli11-dev nlohmann-json3-dev doctest-dev
+  xvfb xauth
+)
+if [[ "$profile" == "test" ]]; then
+  packages+=(assimp-testmodels openarena-oacmp1)
+fi
+
+missing=()
+for package in "${packages[@]}"; do
+  status="$(dpkg-query -W -f='${Status}' "$package" 2>/dev/null || true)"
+  [[ "$status" == "install ok installed" ]] || missing+=("$package")
+done
+
+if ((${#missing[@]} == 0)); then
+  echo "triwalk: all ${#packages[@]} Debian packages present"
+  exit 0
+fi
+
+echo "triwalk: installing ${#missing[@]} Debian packages: ${missing[*]}"
+if [[ "$(id -u)" != "0" ]]; then
+  echo "triwalk: error: installing packages needs root (run as root or with sudo)" >&2
+  exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "triwalk: packages installed"

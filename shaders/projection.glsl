@@ -1,0 +1,11 @@
+// Mirror of core/projection.h (EquirectProjection): keep the two identical.
+const float kPi = 3.14159265358979323846;
+
+// Continuous image point (x, y) of a W x H panorama -> unit world direction.
+vec3 equirectDirection(vec2 imagePoint, vec2 size, float yaw) {
+  float theta = 2.0 * kPi * imagePoint.x / size.x - kPi + yaw;
+  float phi = 0.5 * kPi - kPi * imagePoint.y / size.y;
+  return vec3(cos(phi) * cos(theta), cos(phi) * sin(theta), sin(phi));
+}
+
+float positiveInfinity() { return uintBitsToFloat(0x7F800000u); }

@@ -1,0 +1,242 @@
+// Headless capture: exact distances and colors inside a box of known size,
+// EGL and OSMesa agree, and the built-in scene captures as designed.
+
+#include "core/dataset.h"
+#include "core/projection.h"
+#include "render/dataset_capture.h"
+#include "render/gl_context.h"
+#include "render/mesh_builder.h"
+#include "render/panorama_capturer.h"
+#include "render/scene_description.h"
+#include "tests/test_support.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <fstream>
+
+namespace triwalk {
+
+namespace {
+
+constexpr glm::vec3 kBoxLower{0.0f, 0.0f, 0.0f};
+constexpr glm::vec3 kBoxUpper{4.0f, 3.0f, 2.5f};
+constexpr glm::vec3 kCamera{1.3f, 1.1f, 1.2f};
+
+// Wall order: -x, +x, -y, +y, floor, ceiling; linear colors.
+const glm::vec3 kWallColors[6] = {{0.8f, 0.1f, 0.1f}, {0.1f, 0.8f, 0.1f}, {0.1f, 0.1f, 0.8f},
+                                  {0.8f, 0.8f, 0.1f}, {0.1f, 0.8f, 0.8f}, {0.8f, 0.1f, 0.8f}};
+
+// A closed room lit only by a white ambient term, so every wall shows its
+// base color exactly.
+Scene boxRoom() {
+  Scene scene;
+  scene.name = "box";
+  scene.ambient = glm::vec3(1.0f);
+  const glm::vec3 size = kBoxUpper - kBoxLower;
+  const glm::vec3 x(size.x, 0, 0), y(0, size.y, 0), z(0, 0, size.z);
+  for (int wall = 0; wall < 6; ++wall) {
+    SceneMaterial material;
+    material.baseColor = kWallColors[wall];
+    scene.materials.push_back(material);
+    MeshBuilder builder(wall, 1.0f);
+    switch (wall) {  // normals face into the room
+      case 0: builder.addQuad(kBoxLower, y, z, 0.5f); break;
+      case 1: builder.addQuad(kBoxLower + x, z, y, 0.5f); break;
+      case 2: builder.addQuad(kBoxLower, z, x, 0.5f); break;
+      case 3: builder.addQuad(kBoxLower + y, x, z, 0.5f); break;
+      case 4: builder.addQuad(kBoxLower, x, y, 0.5f); break;
+      case 5: builder.addQuad(kBoxLower + z, y, x, 0.5f); break;
+    }
+    scene.meshes.push_back(builder.take());
+  }
+  scene.walkableArea.min = {0.5f, 0.5f};
+  scene.walkableArea.max = {3.5f, 2.5f};
+  scene.walkableArea.eyeHeight = 1.2f;
+  return scene;
+}
+
+// Distance from the camera to the box along a direction, and the wall hit.
+float rayToBox(glm::vec3 direction, int& wall) {
+  float nearest = INFINITY;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (std::abs(direction[axis]) < 1e-9f) continue;
+    const float plane = direction[axis] > 0.0f ? kBoxUpper[axis] : kBoxLower[axis];
+    const float t = (plane - kCamera[axis]) / direction[axis];
+    if (t > 0.0f && t < nearest) {
+      nearest = t;
+      wall = 2 * axis + (direction[axis] > 0.0f ? 1 : 0);
+    }
+  }
+  return nearest;
+}
+
+Panorama captureBox(HeadlessBackend backend, int width) {
+  auto context = createHeadlessContext(backend);
+  const Scene scene = boxRoom();
+  PanoramaCapturer capturer(scene, width);
+  return capturer.capture(kCamera);
+}
+
+void checkBoxPanorama(const Panorama& panorama) {
+  const EquirectProjection projection{panorama.width(), panorama.height(), 0.0f};
+  float worstRelativeError = 0.0f;
+  size_t colorChecked = 0, colorWrong = 0;
+  for (int v = 0; v < panorama.height(); ++v) {
+    for (int u = 0; u < panorama.width(); ++u) {
+      int wall = -1;
+      const float expected = rayToBox(projection.pixelDirection(u, v), wall);
+      const float captured = panorama.distance.at(u, v);
+      worstRelativeError = std::max(worstRelativeError, std::abs(captured - expected) / expected);
+
+      // Color: away from wall edges (bilinear filtering of the cube faces
+      // blends texels there), i.e. where the rays one pixel around hit the
+      // same wall; a cube texel is smaller than a panorama pixel.
+      bool uniform = true;
+      for (int dv = -1; dv <= 1; ++dv) {
+        for (int du = -1; du <= 1; ++du) {
+          int neighbourWall = -1;
+          rayToBox(projection.direction({float(u + du) + 0.5f, float(v + dv) + 0.5f}), neighbourWall);
+          uniform &= neighbourWall == wall;
+        }
+      }
+      if (!uniform) continue;
+      ++colorChecked;
+      const glm::vec3 difference = glm::abs(panorama.color.at(u, v) - kWallColors[wall]);
+      colorWrong += std::max({difference.r, difference.g, difference.b}) > 2e-3f;
+    }
+  }
+  INFO("worst relative distance error " << worstRelativeError);
+  CHECK(worstRelativeError <= 0.005f);
+  CHECK(colorChecked > panorama.color.pixelCount() * 9 / 10);
+  CHECK(colorWrong == 0);
+}
+
+}  // namespace
+
+TEST_CASE("capture inside a box: distance within 0.5% everywhere, wall colors exact (EGL)") {
+  checkBoxPanorama(captureBox(HeadlessBackend::Egl, 512));
+}
+
+TEST_CASE("capture inside a box: distance within 0.5% everywhere, wall colors exact (OSMesa)") {
+  checkBoxPanorama(captureBox(HeadlessBackend::OsMesa, 256));
+}
+
+TEST_CASE("EGL and OSMesa capture the same panorama") {
+  const Panorama egl = captureBox(HeadlessBackend::Egl, 256);
+  const Panorama osmesa = captureBox(HeadlessBackend::OsMesa, 256);
+  float largest = 0.0f;
+  for (size_t i = 0; i < egl.color.pixelCount(); ++i) {
+    const glm::vec3 d = glm::abs(egl.color.pixels[i] - osmesa.color.pixels[i]);
+    largest = std::max({largest, d.r, d.g, d.b, std::abs(egl.distance.pixels[i] - osmesa.distance.pixels[i])});
+  }
+  CHECK(largest <= 1e-5f);
+}
+
+TEST_CASE("built-in scene: tens of thousands of triangles over a 10 x 5 m walkable area") {
+  const Scene scene = loadSceneDescription(builtinScenePath());
+  CHECK(scene.triangleCount() >= 20000);
+  CHECK(scene.triangleCount() <= 100000);
+  const glm::vec2 size = scene.walkableArea.max - scene.walkableArea.min;
+  CHECK(size.x == doctest::Approx(10.0));
+  CHECK(size.y == doctest::Approx(5.0));
+  CHECK(scene.materials.size() >= 8);
+  bool glossy = false;
+  for (const SceneMaterial& material : scene.materials) glossy |= material.specular > 0.0f;
+  CHECK(glossy);
+}
+
+TEST_CASE("built-in scene: sky through the skylight, floor at eye height, neighbouring rooms through openings") {
+  auto context = createHeadlessContext();
+  const Scene scene = loadSceneDescription(builtinScenePath());
+  PanoramaCapturer capturer(scene, 256);
+  const glm::vec3 underSkylight(5.0f, 2.6f, 1.6f);
+  const Panorama panorama = capturer.capture(underSkylight);
+  const EquirectProjection projection{256, 128, 0.0f};
+  // Straight up: sky at infinity; straight down: the floor 1.6 m below.
+  CHECK(std::isinf(panorama.distance.at(10, 0)));
+  const float down = panorama.distance.at(10, 127);
+  const float expectedDown = 1.6f / -projection.pixelDirection(10, 127).z;
+  CHECK(std::abs(down - expectedDown) <= 0.005f * expectedDown);
+  // At eye height: west through the window (past the stone pillar in front
+  // of it) is open sky; east through the
+  // doorway, south through the window and north through the courtyard
+  // opening are surfaces of the neighbouring rooms.
+  const int west = 253, south = 64, east = 128, north = 192, horizon = 64;
+  CHECK(std::isinf(panorama.distance.at(west, horizon)));
+  CHECK(panorama.distance.at(south, horizon) > 5.0f);
+  CHECK(panorama.distance.at(south, horizon) < 9.0f);
+  CHECK(panorama.distance.at(east, horizon) > 7.0f);
+  CHECK(panorama.distance.at(east, horizon) < 11.0f);
+  CHECK(panorama.distance.at(north, horizon) > 4.0f);
+  CHECK(panorama.distance.at(north, horizon) < 11.5f);
+
+}
+
+TEST_CASE("a glossy surface changes color with the viewpoint, a matte one does not") {
+  auto context = createHeadlessContext();
+  // One floor quad lit by one light; the specular highlight of a point is
+  // strongest from the mirror direction of the light.
+  for (const float specular : {0.0f, 1.0f}) {
+    Scene scene;
+    scene.ambient = glm::vec3(0.1f);
+    scene.lights.push_back({{0.0f, 0.0f, 2.0f}, glm::vec3(1.0f), 10.0f});
+    SceneMaterial material;
+    material.baseColor = glm::vec3(0.4f);
+    material.specular = specular;
+    material.shininess = 40.0f;
+    scene.materials.push_back(material);
+    MeshBuilder builder(0, 1.0f);
+    builder.addQuad({-5.0f, -5.0f, 0.0f}, {10.0f, 0.0f, 0.0f}, {0.0f, 10.0f, 0.0f}, 1.0f);
+    scene.meshes.push_back(builder.take());
+    PanoramaCapturer capturer(scene, 256);
+    const EquirectProjection projection{256, 128, 0.0f};
+    const glm::vec3 floorPoint(1.0f, 0.0f, 0.0f);
+    const glm::vec3 mirror(2.0f, 0.0f, 2.0f), aside(1.0f, 2.0f, 1.5f);
+    const glm::vec2 pixelMirror = projection.imagePoint(floorPoint - mirror);
+    const glm::vec2 pixelAside = projection.imagePoint(floorPoint - aside);
+    const glm::vec3 fromMirror = capturer.capture(mirror).color.at(int(pixelMirror.x), int(pixelMirror.y));
+    const glm::vec3 fromAside = capturer.capture(aside).color.at(int(pixelAside.x), int(pixelAside.y));
+    INFO("specular " << specular);
+    if (specular > 0.0f) {
+      CHECK(fromMirror.r > fromAside.r + 0.2f);
+    } else {
+      CHECK(fromMirror.r == doctest::Approx(fromAside.r).epsilon(0.01));
+    }
+  }
+}
+
+TEST_CASE("capture writes a complete data set that opens, and refuses to overwrite other directories") {
+  testing::TemporaryDirectory directory;
+  auto context = createHeadlessContext();
+  const Scene scene = boxRoom();
+  CaptureOptions options;
+  options.paths = 3;
+  options.perPath = 2;
+  options.width = 64;
+  options.probes = 2;
+  options.quiet = true;
+  const CaptureSummary summary = captureDataset(scene, "box", options, directory / "box");
+  CHECK(summary.samples == 6);
+  CHECK(summary.probes == 2);
+  const Dataset dataset = Dataset::open(directory / "box");
+  CHECK(dataset.sampleCount() == 6);
+  CHECK(dataset.probeCount() == 2);
+  CHECK(dataset.sample(5).position == glm::vec3(3.5f, 2.5f, 1.2f));
+  for (int i = 0; i < dataset.probeCount(); ++i) {
+    const glm::vec3 p = dataset.probe(i).position;
+    CHECK(p.x >= 0.5f);
+    CHECK(p.x <= 3.5f);
+    CHECK(p.y >= 0.5f);
+    CHECK(p.y <= 2.5f);
+  }
+  CHECK(!std::filesystem::exists(directory / "box.partial-triwalk"));
+
+  std::filesystem::create_directories(directory / "other");
+  std::ofstream(directory / "other/notes.txt") << "keep me";
+  testing::requireInputError([&] { captureDataset(scene, "box", options, directory / "other"); },
+                             (directory / "other").string(), "not a triwalk data set");
+  CHECK(std::filesystem::exists(directory / "other/notes.txt"));
+}
+
+}  // namespace triwalk

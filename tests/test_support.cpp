@@ -1,0 +1,35 @@
+#include "tests/test_support.h"
+
+#include <atomic>
+#include <unistd.h>
+
+namespace triwalk::testing {
+
+TemporaryDirectory::TemporaryDirectory() {
+  static std::atomic<int> counter{0};
+  path_ = std::filesystem::temp_directory_path() /
+          ("triwalk-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  std::filesystem::remove_all(path_);
+  std::filesystem::create_directories(path_);
+}
+
+TemporaryDirectory::~TemporaryDirectory() {
+  std::error_code ignored;
+  std::filesystem::remove_all(path_, ignored);
+}
+
+void requireInputError(const std::function<void()>& action, const std::string& subject, const std::string& problem) {
+  try {
+    action();
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    INFO("message: " << message);
+    CHECK(message.find(subject) != std::string::npos);
+    CHECK(message.find(problem) != std::string::npos);
+    CHECK(message.find('\n') == std::string::npos);
+    return;
+  }
+  FAIL("expected an InputError naming " << subject << " with '" << problem << "'");
+}
+
+}  // namespace triwalk::testing

@@ -1,0 +1,33 @@
+#pragma once
+// Helpers shared by the test suites: scratch directories and checks that
+// an InputError names the right file.
+
+#include "core/errors.h"
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace triwalk::testing {
+
+// A fresh directory under the system temp dir, removed with its contents.
+class TemporaryDirectory {
+public:
+  TemporaryDirectory();
+  ~TemporaryDirectory();
+  TemporaryDirectory(const TemporaryDirectory&) = delete;
+  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+private:
+  std::filesystem::path path_;
+};
+
+// Runs action, which must throw InputError whose one-line message contains
+// both the expected subject (a file name) and the expected problem text.
+void requireInputError(const std::function<void()>& action, const std::string& subject, const std::string& problem);
+
+}  // namespace triwalk::testing

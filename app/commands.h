@@ -8,5 +8,6 @@ namespace triwalk {
 void registerCaptureCommand(CLI::App& app);
 void registerExportPngCommand(CLI::App& app);
 void registerBenchCommand(CLI::App& app);
+void registerSynthCommand(CLI::App& app);
 
 }  // namespace triwalk

@@ -1,4 +1,5 @@
 #include "app/commands.h"
+#include "app/view_ids.h"
 #include "core/dataset.h"
 #include "core/errors.h"
 #include "core/png_io.h"
@@ -10,25 +11,15 @@ namespace triwalk {
 
 namespace {
 
-// "12" is sample 12, "p3" is probe 3, "all" is every view.
 std::vector<const ViewRecord*> selectViews(const Dataset& dataset, const std::vector<std::string>& names) {
   std::vector<const ViewRecord*> views;
   for (const std::string& name : names) {
     if (name == "all") {
       for (const ViewRecord& view : dataset.manifest().samples) views.push_back(&view);
       for (const ViewRecord& view : dataset.manifest().probes) views.push_back(&view);
-      continue;
+    } else {
+      views.push_back(&findView(dataset, name, "--views"));
     }
-    const bool probe = !name.empty() && name[0] == 'p';
-    int id = -1;
-    try {
-      id = std::stoi(probe ? name.substr(1) : name);
-    } catch (const std::exception&) {
-      throw InputError("--views", "'" + name + "' is not a view id (12 for a sample, p3 for a probe)");
-    }
-    const int index = probe ? dataset.probeIndexOfId(id) : dataset.sampleIndexOfId(id);
-    if (index < 0) throw InputError("--views", "no " + std::string(probe ? "probe" : "sample") + " with id " + std::to_string(id));
-    views.push_back(probe ? &dataset.probe(index) : &dataset.sample(index));
   }
   return views;
 }

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   triwalk::registerCaptureCommand(app);
   triwalk::registerExportPngCommand(app);
+  triwalk::registerSynthCommand(app);
   triwalk::registerBenchCommand(app);
   try {
     app.parse(argc, argv);

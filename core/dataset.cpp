@@ -3,6 +3,7 @@
 #include "core/errors.h"
 #include "core/exr_io.h"
 #include "core/json_fields.h"
+#include "core/panorama_resample.h"
 
 #include <map>
 #include <sstream>
@@ -137,7 +138,17 @@ int Dataset::probeIndexOfId(int id) const {
   return -1;
 }
 
-Panorama Dataset::loadView(const ViewRecord& view) const {
+int Dataset::downsamplingFactor(int width, const std::string& option) const {
+  if (width == 0 || width == manifest_.width) return 1;
+  if (width < 0 || width > manifest_.width || manifest_.width % width != 0 || manifest_.height % (manifest_.width / width) != 0) {
+    throw InputError(option, "width " + std::to_string(width) + " must divide the data set's width " +
+                                 std::to_string(manifest_.width) + " (and its height) by a whole number");
+  }
+  return manifest_.width / width;
+}
+
+Panorama Dataset::loadView(const ViewRecord& view, int width) const {
+  const int factor = downsamplingFactor(width, "width");
   const std::filesystem::path path = directory_ / view.file;
   Panorama panorama = readPanoramaExr(path);
   if (panorama.width() != manifest_.width || panorama.height() != manifest_.height) {
@@ -145,7 +156,7 @@ Panorama Dataset::loadView(const ViewRecord& view) const {
                                         std::to_string(panorama.height()) + " but the manifest says " +
                                         std::to_string(manifest_.width) + "x" + std::to_string(manifest_.height));
   }
-  return panorama;
+  return downsamplePanorama(panorama, factor);
 }
 
 EquirectProjection Dataset::projection(const ViewRecord& view) const {

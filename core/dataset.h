@@ -66,9 +66,14 @@ public:
   int sampleIndexOfId(int id) const;
   int probeIndexOfId(int id) const;
 
-  // Loads one view's panorama at full resolution, validating its size
-  // against the manifest and its values (see readPanoramaExr).
-  Panorama loadView(const ViewRecord& view) const;
+  // Loads one view's panorama, validating its size against the manifest
+  // and its values (see readPanoramaExr). A width below the data set's
+  // downsamples by an integer factor (see downsamplePanorama); 0 = full.
+  Panorama loadView(const ViewRecord& view, int width = 0) const;
+
+  // Throws InputError (naming option) unless width is 0 or divides the
+  // data set's width by an integer factor.
+  int downsamplingFactor(int width, const std::string& option) const;
 
   EquirectProjection projection(const ViewRecord& view) const;
 

@@ -1,0 +1,33 @@
+#pragma once
+// The groups of `triwalk bench`, one file each; they share the built-in
+// scene captured once at the sizes they need.
+
+#include "app/bench_table.h"
+#include "core/image.h"
+#include "render/scene.h"
+
+#include <chrono>
+#include <vector>
+
+namespace triwalk {
+
+// Panoramas of the built-in scene around the middle of the walkable area,
+// rendered once with the current GL context.
+struct BenchViews {
+  Scene scene;
+  std::vector<glm::vec3> positions;  // sources, 0.35 m apart
+  std::vector<Panorama> panoramas;   // 1024x512, one per position
+  glm::vec3 destination{0.0f};       // inside the sources' triangle
+  Panorama destinationPanorama;
+};
+BenchViews captureBenchViews();
+
+void benchCapture(BenchTable& table, const Scene& scene, int width, int views);
+void benchWarp(BenchTable& table, const BenchViews& views, int decimationWidth);
+
+using BenchClock = std::chrono::steady_clock;
+inline double secondsSince(BenchClock::time_point start) {
+  return std::chrono::duration<double>(BenchClock::now() - start).count();
+}
+
+}  // namespace triwalk

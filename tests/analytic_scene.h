@@ -1,0 +1,48 @@
+#pragma once
+// Scenes whose panoramas are computed exactly by ray casting, for tests
+// with known answers: an axis-aligned room seen from inside, solid boxes,
+// vertical cylinders (pillars), an open top (sky). Surface colors are
+// smooth functions of the hit point (so interpolation errors stay small)
+// except where a test asks for a sharp stripe.
+
+#include "core/image.h"
+
+#include <glm/glm.hpp>
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace triwalk::testing {
+
+struct AnalyticHit {
+  float distance = 0.0f;  // +inf for sky
+  glm::vec3 color{0.0f};  // linear
+  int surface = -1;       // index of what was hit: 0..5 room walls, 100+i boxes, 200+i cylinders, -1 sky
+};
+
+struct AnalyticScene {
+  struct Room {
+    glm::vec3 lower, upper;
+    bool openTop = false;  // no ceiling: the sky shows above
+  };
+  struct Cylinder {
+    glm::vec2 center;
+    float radius, bottom, top;
+  };
+  std::optional<Room> room;
+  std::vector<std::pair<glm::vec3, glm::vec3>> boxes;  // solid boxes (min, max)
+  std::vector<Cylinder> cylinders;
+  // Color of a surface point; default: smooth pattern distinct per surface.
+  std::function<glm::vec3(glm::vec3 point, int surface)> shade;
+  glm::vec3 skyColor{0.4f, 0.6f, 0.9f};
+
+  AnalyticHit trace(glm::vec3 origin, glm::vec3 direction) const;
+};
+
+// Smooth per-surface pattern in [0.15, 0.85].
+glm::vec3 smoothPattern(glm::vec3 point, int surface);
+
+Panorama renderPanorama(const AnalyticScene& scene, glm::vec3 position, int width);
+
+}  // namespace triwalk::testing

@@ -1,0 +1,279 @@
+// The CPU reference warp, blend and error against scenes with known answers.
+
+#include "core/blend.h"
+#include "core/color.h"
+#include "core/reconstruction_error.h"
+#include "core/view_synthesis.h"
+#include "core/warp.h"
+#include "tests/analytic_scene.h"
+
+#include <tbb/global_control.h>
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+namespace triwalk {
+
+using testing::AnalyticScene;
+using testing::renderPanorama;
+
+namespace {
+
+constexpr int kWidth = 256;
+
+AnalyticScene roomWithPillar() {
+  AnalyticScene scene;
+  scene.room = AnalyticScene::Room{{-5.0f, -1.0f, 0.0f}, {5.0f, 4.0f, 3.0f}, false};
+  scene.cylinders.push_back({{0.0f, 2.0f}, 0.3f, 0.0f, 3.0f});
+  return scene;
+}
+
+ReconstructionError compare(const BlendedView& view, const Panorama& truth, ScalarImage* perPixel = nullptr) {
+  return reconstructionError(toDisplayColors(view.color), view.hole, toDisplayColors(truth.color), ErrorOptions{}, perPixel);
+}
+
+SynthesizedView synthesize(const AnalyticScene& scene, std::vector<glm::vec3> sourcePositions, glm::vec3 destination,
+                           const SynthesisOptions& options = {}) {
+  std::vector<std::unique_ptr<WarpSource>> sources;
+  std::vector<const WarpSource*> pointers;
+  for (glm::vec3 position : sourcePositions) {
+    sources.push_back(std::make_unique<WarpSource>(renderPanorama(scene, position, kWidth), position, 0.0f, options.warp));
+    pointers.push_back(sources.back().get());
+  }
+  return synthesizeView(pointers, DestinationCamera::panorama(destination, kWidth, kWidth / 2), options);
+}
+
+}  // namespace
+
+TEST_CASE("a source warped to its own position reproduces itself exactly") {
+  const AnalyticScene scene = roomWithPillar();
+  const glm::vec3 position(-1.0f, 0.0f, 1.5f);
+  const Panorama truth = renderPanorama(scene, position, kWidth);
+  const SynthesizedView view = synthesize(scene, {position}, position);
+  const ReconstructionError error = compare(view.blended, truth);
+  CHECK(error.rms < 1e-6);
+  CHECK(error.badPercent == 0.0);
+  CHECK(error.total < 1e-5);
+  CHECK(std::count(view.blended.hole.begin(), view.blended.hole.end(), uint8_t(1)) == 0);
+}
+
+TEST_CASE("box scene warped to a new position matches the view rendered there") {
+  // Inside a closed room nothing is hidden: the warp must reproduce the
+  // destination up to interpolation of a smooth pattern.
+  AnalyticScene scene;
+  scene.room = AnalyticScene::Room{{-3.0f, -2.0f, 0.0f}, {3.0f, 2.0f, 2.5f}, false};
+  const glm::vec3 source(0.0f, 0.0f, 1.5f), destination(0.4f, -0.3f, 1.2f);
+  const SynthesizedView view = synthesize(scene, {source}, destination);
+  const ReconstructionError error = compare(view.blended, renderPanorama(scene, destination, kWidth));
+  INFO("R " << error.rms << " B " << error.badPercent);
+  CHECK(error.rms < 0.01);
+  CHECK(error.badPercent < 0.5);
+  // The distance channel too: the destination distance of every pixel.
+  const Panorama truth = renderPanorama(scene, destination, kWidth);
+  float worst = 0.0f;
+  for (size_t i = 0; i < truth.distance.pixelCount(); ++i) {
+    worst = std::max(worst, std::abs(view.blended.distance.pixels[i] - truth.distance.pixels[i]) / truth.distance.pixels[i]);
+  }
+  CHECK(worst < 0.02f);
+}
+
+TEST_CASE("plane with sky warped to a new position matches where the plane is not seen edge-on") {
+  AnalyticScene scene;
+  scene.boxes.push_back({{-4.0f, -4.0f, -0.1f}, {4.0f, 4.0f, 0.0f}});  // a floor slab under open sky
+  const glm::vec3 source(0.0f, 0.0f, 1.6f), destination(0.5f, 0.3f, 1.6f);
+  const SynthesizedView view = synthesize(scene, {source}, destination);
+  const Panorama truth = renderPanorama(scene, destination, kWidth);
+  // Compare the sky and the floor nearer than 5 m (at eye height 1.6 m the
+  // floor is seen at more than 18 degrees there).
+  size_t compared = 0, bad = 0;
+  for (size_t i = 0; i < truth.color.pixelCount(); ++i) {
+    const float d = truth.distance.pixels[i];
+    if (!(std::isinf(d) || d < 5.0f)) continue;
+    ++compared;
+    const glm::vec3 difference = glm::abs(displayColor(view.blended.color.pixels[i]) - displayColor(truth.color.pixels[i]));
+    bad += view.blended.hole[i] || std::max({difference.r, difference.g, difference.b}) > 15.0f / 255.0f;
+  }
+  CHECK(compared > truth.color.pixelCount() * 3 / 4);
+  CHECK(bad <= compared / 200);
+}
+
+TEST_CASE("a pillar leaves a hole exactly where the wall is hidden from the source; a second source fills it") {
+  //   y=4  ==========  back wall  ==========
+  //                      region R: seen from D, hidden from S1 by the pillar
+  //   y=2               ( pillar r=0.3 at x=0 )
+  //   y=0      S1 (-1)              D (1)     S2 (2)
+  const AnalyticScene scene = roomWithPillar();
+  const glm::vec3 s1(-1.0f, 0.0f, 1.5f), destination(1.0f, 0.0f, 1.5f), s2(2.0f, 0.0f, 1.5f);
+  const EquirectProjection projection{kWidth, kWidth / 2, 0.0f};
+  const SynthesizedView fromS1 = synthesize(scene, {s1}, destination);
+  const SynthesizedView fromBoth = synthesize(scene, {s1, s2}, destination);
+
+  size_t hiddenPixels = 0, mismatches = 0, filled = 0;
+  for (int v = 0; v < projection.height; ++v) {
+    for (int u = 0; u < projection.width; ++u) {
+      const testing::AnalyticHit hit = scene.trace(destination, projection.pixelDirection(u, v));
+      if (hit.surface != 3) continue;  // the back wall, y = 4
+      const glm::vec3 point = destination + hit.distance * projection.pixelDirection(u, v);
+      const testing::AnalyticHit fromSource = scene.trace(s1, glm::normalize(point - s1));
+      const bool hidden = fromSource.surface != 3;
+      // Decide only away from the region's boundary: the neighbours agree.
+      bool boundary = false;
+      for (int du = -2; du <= 2; ++du) {
+        const glm::vec3 direction = projection.pixelDirection((u + du + kWidth) % kWidth, v);
+        const testing::AnalyticHit neighbour = scene.trace(destination, direction);
+        if (neighbour.surface != 3) { boundary = true; continue; }
+        const glm::vec3 p = destination + neighbour.distance * direction;
+        boundary |= (scene.trace(s1, glm::normalize(p - s1)).surface != 3) != hidden;
+      }
+      if (boundary) continue;
+      const size_t i = size_t(v) * size_t(kWidth) + size_t(u);
+      hiddenPixels += hidden;
+      mismatches += bool(fromS1.blended.hole[i]) != hidden;
+      filled += hidden && !fromBoth.blended.hole[i];
+    }
+  }
+  INFO("hidden " << hiddenPixels << " mismatches " << mismatches << " filled " << filled);
+  CHECK(hiddenPixels > 100);
+  CHECK(mismatches == 0);
+  CHECK(filled == hiddenPixels);
+}
+
+TEST_CASE("triangles crossing the destination seam are split, not smeared across the panorama") {
+  // A red stripe on the west wall straight behind the destination's seam
+  // (longitude -180 degrees); the source sits slightly beside it.
+  AnalyticScene scene;
+  scene.room = AnalyticScene::Room{{-4.0f, -3.0f, 0.0f}, {4.0f, 3.0f, 3.0f}, false};
+  scene.shade = [](glm::vec3 p, int surface) {
+    if (surface == 0 && std::abs(p.y - 0.2f) < 0.3f) return glm::vec3(0.9f, 0.02f, 0.02f);
+    return glm::vec3(0.2f, 0.5f, 0.3f);
+  };
+  const glm::vec3 source(0.3f, -0.1f, 1.5f), destination(0.0f, 0.2f, 1.5f);
+  const SynthesizedView view = synthesize(scene, {source}, destination);
+  const Panorama truth = renderPanorama(scene, destination, kWidth);
+  size_t redAwayFromSeam = 0, seamHoles = 0, seamWrong = 0;
+  for (int v = 8; v < kWidth / 2 - 8; ++v) {
+    for (int u = 0; u < kWidth; ++u) {
+      const size_t i = size_t(v) * size_t(kWidth) + size_t(u);
+      const bool nearSeam = u < 16 || u >= kWidth - 16;
+      const bool red = view.blended.color.pixels[i].r > 0.5f;
+      if (!nearSeam) redAwayFromSeam += red;
+      if (u == 0 || u == kWidth - 1) {
+        seamHoles += view.blended.hole[i];
+        seamWrong += red != (truth.color.pixels[i].r > 0.5f);
+      }
+    }
+  }
+  CHECK(redAwayFromSeam == 0);
+  CHECK(seamHoles == 0);
+  CHECK(seamWrong <= 4);  // at the stripe's edges only
+}
+
+TEST_CASE("the paper's point warp leaves cracks where the mesh warp does not") {
+  AnalyticScene scene;
+  scene.room = AnalyticScene::Room{{-3.0f, -2.0f, 0.0f}, {3.0f, 2.0f, 2.5f}, false};
+  const glm::vec3 source(-1.0f, 0.0f, 1.5f), destination(1.5f, 0.0f, 1.5f);  // magnifies the east wall
+  SynthesisOptions point;
+  point.warp.method = WarpMethod::Point;
+  const SynthesizedView mesh = synthesize(scene, {source}, destination);
+  const SynthesizedView points = synthesize(scene, {source}, destination, point);
+  const auto holes = [](const SynthesizedView& view) {
+    return double(std::count(view.blended.hole.begin(), view.blended.hole.end(), uint8_t(1))) / double(view.blended.hole.size());
+  };
+  CHECK(holes(mesh) == 0.0);
+  CHECK(holes(points) > 0.05);
+}
+
+TEST_CASE("the stretch test drops rubber sheets; without it they hide what a second source sees") {
+  const AnalyticScene scene = roomWithPillar();
+  const glm::vec3 s1(-1.0f, 0.0f, 1.5f), destination(1.0f, 0.0f, 1.5f), s2(2.0f, 0.0f, 1.5f);
+  const Panorama truth = renderPanorama(scene, destination, kWidth);
+  SynthesisOptions none;
+  none.warp.stretchTest = StretchTest::None;
+  SynthesisOptions ratio;
+  ratio.warp.stretchTest = StretchTest::DepthRatio;
+  const ReconstructionError withGrazing = compare(synthesize(scene, {s1, s2}, destination).blended, truth);
+  const ReconstructionError withRatio = compare(synthesize(scene, {s1, s2}, destination, ratio).blended, truth);
+  const ReconstructionError without = compare(synthesize(scene, {s1, s2}, destination, none).blended, truth);
+  INFO("E grazing " << withGrazing.total << " ratio " << withRatio.total << " none " << without.total);
+  CHECK(withGrazing.total < 0.5 * without.total);
+  CHECK(withRatio.total < 0.5 * without.total);
+}
+
+TEST_CASE("warp results are identical for any thread count") {
+  const AnalyticScene scene = roomWithPillar();
+  const glm::vec3 s1(-1.0f, 0.0f, 1.5f), destination(1.0f, 0.3f, 1.4f);
+  const Panorama panorama = renderPanorama(scene, s1, kWidth);
+  const WarpSource source(panorama, s1, 0.0f, WarpOptions{});
+  const DestinationCamera camera = DestinationCamera::panorama(destination, kWidth, kWidth / 2);
+  const WarpLayer all = warpToCamera(source, camera, WarpMethod::Mesh);
+  WarpLayer one;
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    one = warpToCamera(source, camera, WarpMethod::Mesh);
+  }
+  CHECK(one.color.pixels == all.color.pixels);
+  CHECK(one.distance.pixels == all.distance.pixels);
+  CHECK(one.covered == all.covered);
+}
+
+TEST_CASE("blend: nearest layer wins, layers within epsilon average with inverse-distance weights") {
+  // Three one-pixel layers: A at 2.0 m, B at 2.05 m (within 5% of A), C at 3 m (behind).
+  auto layer = [](glm::vec3 color, float distance) {
+    WarpLayer l{ColorImage(1, 1, color), ScalarImage(1, 1, distance), {1}, 0, {}};
+    return l;
+  };
+  const std::vector<WarpLayer> layers = {layer({1, 0, 0}, 2.0f), layer({0, 1, 0}, 2.05f), layer({0, 0, 1}, 3.0f)};
+  const glm::vec3 positions[3] = {{1, 0, 0}, {0, 4, 0}, {0, 0, 0.5f}};
+  const std::vector<float> weights = blendWeights(glm::vec3(0.0f), positions, BlendOptions{});
+  CHECK(weights[0] == doctest::Approx(1.0));
+  CHECK(weights[1] == doctest::Approx(0.25));
+  const BlendedView view = blendLayers(layers, weights, BlendOptions{});
+  CHECK(view.color.pixels[0].r == doctest::Approx(0.8));  // 1 / (1 + 0.25)
+  CHECK(view.color.pixels[0].g == doctest::Approx(0.2));
+  CHECK(view.color.pixels[0].b == doctest::Approx(0.0));
+  CHECK(view.distance.pixels[0] == doctest::Approx(2.0));
+  CHECK(view.contributors[0] == 0b011);
+  BlendOptions narrow;
+  narrow.epsilon = 0.01f;
+  CHECK(blendLayers(layers, weights, narrow).color.pixels[0] == glm::vec3(1, 0, 0));
+}
+
+TEST_CASE("R, B and E by hand on a 4x2 image") {
+  // Truth: gray 0.5 everywhere (display values). Reconstruction: pixel 0 off
+  // by 0.1 in every channel, pixel 1 off by 0.2 in red, pixel 2 a hole
+  // (black: off by 0.5 in every channel), the rest exact.
+  //   R = sqrt((3*0.01 + 0.04 + 3*0.25) / (3*8)) = sqrt(0.82 / 24) = 0.1848422
+  //   B = 3 bad of 8 = 37.5 %  (0.1 and 0.2 exceed 15/255 = 0.0588; holes are bad)
+  //   E = 10 R + 0.1 B = 1.848422 + 3.75 = 5.598422
+  const ColorImage truth(4, 2, glm::vec3(0.5f));
+  ColorImage reconstruction = truth;
+  reconstruction.pixels[0] = glm::vec3(0.6f);
+  reconstruction.pixels[1] = glm::vec3(0.7f, 0.5f, 0.5f);
+  std::vector<uint8_t> hole(8, 0);
+  hole[2] = 1;
+  ErrorOptions uniform;
+  uniform.weighting = PixelWeighting::Uniform;
+  ScalarImage perPixel;
+  const ReconstructionError error = reconstructionError(reconstruction, hole, truth, uniform, &perPixel);
+  CHECK(error.rms == doctest::Approx(0.1848422).epsilon(1e-6));
+  CHECK(error.badPercent == doctest::Approx(37.5));
+  CHECK(error.total == doctest::Approx(5.598422).epsilon(1e-6));
+  CHECK(perPixel.pixels[2] == 1.0f);
+  CHECK(perPixel.pixels[0] == doctest::Approx(0.1));
+
+  // Solid-angle weighting on a 2x4 panorama: rows at latitudes 67.5, 22.5,
+  // -22.5, -67.5 degrees weigh cos(67.5) = 0.382683 and cos(22.5) = 0.923880.
+  // One bad pixel (0.2 in every channel) in the top row:
+  //   B = 100 * 0.382683 / (2 * 2 * (0.382683 + 0.923880)) = 7.32437 %
+  //   R = sqrt(0.382683 * 3 * 0.04 / (3 * 2 * 2 * 1.306563)) = 0.0541196
+  const ColorImage panoramaTruth(2, 4, glm::vec3(0.5f));
+  ColorImage panoramaReconstruction = panoramaTruth;
+  panoramaReconstruction.pixels[0] = glm::vec3(0.7f);
+  const ReconstructionError weighted = reconstructionError(panoramaReconstruction, {}, panoramaTruth, ErrorOptions{});
+  CHECK(weighted.badPercent == doctest::Approx(7.32437).epsilon(1e-5));
+  CHECK(weighted.rms == doctest::Approx(0.0541196).epsilon(1e-5));
+  CHECK(weighted.total == doctest::Approx(10 * 0.0541196 + 0.1 * 7.32437).epsilon(1e-5));
+}
+
+}  // namespace triwalk

@@ -11,6 +11,8 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <numbers>
 
 namespace triwalk {
 
@@ -165,11 +167,18 @@ DestinationCamera DestinationCamera::camera(const PinholeCamera& pinhole) {
 
 namespace {
 
+using Clock = std::chrono::steady_clock;
+
 constexpr uint64_t kEmpty = std::numeric_limits<uint64_t>::max();
 constexpr float kPinholeNear = 0.01f;  // metres
 
+// Z-buffer payload: (triangle << 2) for a triangle, (vertex << 2) | 3 for
+// a splatted point.
+constexpr uint32_t kPointPayload = 3;
+
 // A source vertex as the destination sees it.
 struct ProjectedVertex {
+  glm::dvec3 relative{0.0};   // equirect: vector from the destination (a direction at infinity)
   glm::vec2 screen{0.0f};     // continuous image coordinates
   float inverseDistance = 0;  // 1 / metres from the destination, 0 at infinity
   float depth = 1.0f;         // pinhole: camera-frame depth, for perspective-correct interpolation
@@ -185,6 +194,7 @@ ProjectedVertex projectVertex(const WarpSource& source, uint32_t vertex, const D
   if (!(distance > 1e-6f)) return projected;
   projected.inverseDistance = infinite ? 0.0f : 1.0f / distance;
   if (destination.kind == DestinationCamera::Kind::Equirect) {
+    projected.relative = glm::dvec3(relative);
     projected.screen = destination.equirect.imagePoint(relative);
     projected.valid = true;
   } else {
@@ -198,9 +208,146 @@ ProjectedVertex projectVertex(const WarpSource& source, uint32_t vertex, const D
   return projected;
 }
 
-// Edge function of p against the directed edge a -> b, computed the same
-// way whichever way the edge is directed, so that triangles sharing an
-// edge agree exactly on which side a pixel centre lies (no cracks).
+// Which pixel centres a triangle covers, with the weights that interpolate
+// its vertex attributes there and the inverse distance of the surface.
+struct Coverage {
+  double weights[3];
+  float inverseDistance;
+};
+
+// Panorama destinations: exact coverage on the sphere. A pixel's ray
+// direction w lies in the triangle's cone when the three triple products
+// det(r_i+1, r_i+2, w) share the sign of det(r0, r1, r2); normalized, they
+// are the barycentric weights of the ray's hit on the triangle's plane
+// (perspective-correct), and t = det(r0, r1, r2) / sum is its distance.
+// No seam or pole is special: a triangle across the seam covers columns
+// on both sides, one around a pole covers whole rows. Neighbours share
+// edges exactly (swapping the two vertices negates the cross product), so
+// there are no cracks.
+class SphericalTriangle {
+public:
+  SphericalTriangle(const ProjectedVertex* v[3], bool atInfinity) : atInfinity_(atInfinity) {
+    for (int i = 0; i < 3; ++i) normals_[i] = glm::cross(v[(i + 1) % 3]->relative, v[(i + 2) % 3]->relative);
+    volume_ = glm::dot(v[0]->relative, normals_[0]);
+  }
+
+  bool degenerate() const { return volume_ == 0.0; }
+
+  bool covers(glm::dvec3 direction, Coverage& coverage) const {
+    double sum = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      coverage.weights[i] = glm::dot(normals_[i], direction);
+      if (coverage.weights[i] * volume_ < 0.0) return false;
+      sum += coverage.weights[i];
+    }
+    if (!(sum * volume_ > 0.0)) return false;
+    for (double& w : coverage.weights) w /= sum;
+    coverage.inverseDistance = atInfinity_ ? 0.0f : float(sum / volume_);
+    return true;
+  }
+
+private:
+  glm::dvec3 normals_[3];
+  double volume_ = 0.0;
+  bool atInfinity_;
+};
+
+// Per-column and per-row factors of the destination's pixel directions.
+struct DirectionTable {
+  std::vector<double> cosTheta, sinTheta, cosPhi, sinPhi;
+  std::vector<double> tanLatitude;  // |tan| of the latitude k rows from a pole, k <= H / 2
+  explicit DirectionTable(const EquirectProjection& projection) {
+    for (int u = 0; u < projection.width; ++u) {
+      const glm::vec3 d = projection.pixelDirection(u, projection.height / 2);
+      const double theta = std::atan2(double(d.y), double(d.x));
+      cosTheta.push_back(std::cos(theta));
+      sinTheta.push_back(std::sin(theta));
+    }
+    for (int v = 0; v < projection.height; ++v) {
+      const double phi = 0.5 * std::numbers::pi - std::numbers::pi * (v + 0.5) / projection.height;
+      cosPhi.push_back(std::cos(phi));
+      sinPhi.push_back(std::sin(phi));
+    }
+    for (int k = 0; k <= projection.height / 2; ++k) {
+      tanLatitude.push_back(k == 0 ? 1e30 : 1.0 / std::tan(std::numbers::pi * k / projection.height));
+    }
+  }
+  glm::dvec3 at(int u, int v) const { return {cosPhi[size_t(v)] * cosTheta[size_t(u)], cosPhi[size_t(v)] * sinTheta[size_t(u)], sinPhi[size_t(v)]}; }
+};
+
+// The candidate pixels of a spherical triangle: its rows and columns from
+// the vertices' image points, whole rows when it contains a pole, columns
+// across the seam when it straddles it (iterated modulo the width).
+struct PixelRange {
+  int x0, x1, y0, y1;
+};
+
+PixelRange sphericalRange(const ProjectedVertex* v[3], const SphericalTriangle& triangle, const DirectionTable& directions,
+                          int width, int height) {
+  double xs[3], minY = 1e30, maxY = -1e30;
+  for (int i = 0; i < 3; ++i) {
+    xs[i] = v[i]->screen.x;
+    minY = std::min(minY, double(v[i]->screen.y));
+    maxY = std::max(maxY, double(v[i]->screen.y));
+  }
+  if (std::max({xs[0], xs[1], xs[2]}) - std::min({xs[0], xs[1], xs[2]}) > 0.5 * width) {
+    for (double& x : xs) x += x < 0.5 * width ? width : 0.0;
+  }
+  double minX = std::min({xs[0], xs[1], xs[2]}), maxX = std::max({xs[0], xs[1], xs[2]});
+  // Great-circle edges bulge towards the poles between their vertices:
+  // an edge spanning dtheta of longitude at latitude phi bulges by about
+  // dtheta^2 / 8 * tan(phi). Where that may reach 1/100 row (wide
+  // triangles, high latitudes) the rows come from each edge's exact
+  // extreme latitude; elsewhere a margin of 1/100 pixel covers the image
+  // points' rounding.
+  const double pi = std::numbers::pi;
+  const int rowsFromPole = int(std::min(minY, height - maxY));
+  const double longitudeSpan = (maxX - minX) * 2.0 * pi / width;
+  const bool mayBulge = rowsFromPole < height / 20 ||
+                        2.0 * longitudeSpan * longitudeSpan / 8.0 * directions.tanLatitude[size_t(rowsFromPole)] * height / pi > 0.01;
+  if (mayBulge) {
+    for (int i = 0; i < 3; ++i) {
+      const glm::dvec3 a = glm::normalize(v[i]->relative), b = glm::normalize(v[(i + 1) % 3]->relative);
+      const glm::dvec3 normal = glm::cross(a, b);
+      const double length = glm::length(normal);
+      if (length < 1e-12) continue;
+      const glm::dvec3 n = normal / length;
+      for (const double pole : {1.0, -1.0}) {
+        // The point of the edge's great circle nearest the pole, if it lies on the edge.
+        const glm::dvec3 toward = glm::dvec3(0.0, 0.0, pole) - pole * n.z * n;
+        if (glm::length(toward) < 1e-12) continue;
+        const glm::dvec3 p = glm::normalize(toward);
+        if (glm::dot(glm::cross(a, p), n) < 0.0 || glm::dot(glm::cross(p, b), n) < 0.0) continue;
+        const double y = (0.5 * pi - std::asin(std::clamp(p.z, -1.0, 1.0))) * height / pi;
+        minY = std::min(minY, y);
+        maxY = std::max(maxY, y);
+      }
+    }
+  }
+  const double margin = 0.01;
+  // Only a triangle whose vertices spread over more than half the
+  // longitudes can contain a pole.
+  if (maxX - minX > 0.5 * width) {
+    Coverage ignored;
+    const bool north = triangle.covers({0.0, 0.0, 1.0}, ignored);
+    const bool south = triangle.covers({0.0, 0.0, -1.0}, ignored);
+    if (north) minY = 0.0;
+    if (south) maxY = height;
+    if (north || south) minX = 0.0, maxX = width;
+  }
+  PixelRange range;
+  range.x0 = int(std::ceil(minX - 0.5 - margin));
+  range.x1 = int(std::floor(maxX - 0.5 + margin));
+  if (range.x1 - range.x0 >= width) range.x0 = 0, range.x1 = width - 1;
+  range.y0 = std::max(0, int(std::ceil(minY - 0.5 - margin)));
+  range.y1 = std::min(height - 1, int(std::floor(maxY - 0.5 + margin)));
+  return range;
+}
+
+// Pinhole destinations: edge functions in the image plane, computed the
+// same way whichever way an edge is directed so that neighbours agree
+// exactly on which side a pixel centre lies (no cracks); attributes are
+// interpolated perspective-correctly, as the GPU does.
 double edgeFunction(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) {
   const bool swapped = b.x < a.x || (b.x == a.x && b.y < a.y);
   const glm::dvec2 from = swapped ? b : a, to = swapped ? a : b;
@@ -208,59 +355,45 @@ double edgeFunction(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) {
   return swapped ? -value : value;
 }
 
-// Screen positions of a triangle's copy: copy 0 as projected, copies 1
-// and 2 for a triangle crossing the equirectangular seam (vertices on the
-// left moved right by W, then copy 2 moved left by W).
-void copyScreens(const ProjectedVertex* vertex[3], int copy, int width, glm::dvec2 screen[3]) {
-  for (int i = 0; i < 3; ++i) screen[i] = glm::dvec2(vertex[i]->screen);
-  if (copy == 0) return;
-  for (int i = 0; i < 3; ++i) {
-    if (screen[i].x < 0.5 * width) screen[i].x += width;
-    if (copy == 2) screen[i].x -= width;
+class PlanarTriangle {
+public:
+  explicit PlanarTriangle(const ProjectedVertex* v[3]) : vertices_(v) {
+    for (int i = 0; i < 3; ++i) screen_[i] = glm::dvec2(v[i]->screen);
+    area_ = edgeFunction(screen_[0], screen_[1], screen_[2]);
   }
-}
 
-struct Barycentric {
-  double weights[3];
-};
+  bool degenerate() const { return area_ == 0.0; }
 
-bool barycentricAt(const glm::dvec2 screen[3], glm::dvec2 p, Barycentric& result) {
-  const double area = edgeFunction(screen[0], screen[1], screen[2]);
-  if (area == 0.0) return false;
-  const double w0 = edgeFunction(screen[1], screen[2], p);
-  const double w1 = edgeFunction(screen[2], screen[0], p);
-  const double w2 = edgeFunction(screen[0], screen[1], p);
-  if (area > 0.0 ? (w0 < 0.0 || w1 < 0.0 || w2 < 0.0) : (w0 > 0.0 || w1 > 0.0 || w2 > 0.0)) return false;
-  result.weights[0] = w0 / area;
-  result.weights[1] = w1 / area;
-  result.weights[2] = w2 / area;
-  return true;
-}
+  PixelRange range(int width, int height) const {
+    const double minX = std::min({screen_[0].x, screen_[1].x, screen_[2].x});
+    const double maxX = std::max({screen_[0].x, screen_[1].x, screen_[2].x});
+    const double minY = std::min({screen_[0].y, screen_[1].y, screen_[2].y});
+    const double maxY = std::max({screen_[0].y, screen_[1].y, screen_[2].y});
+    return {std::max(0, int(std::ceil(minX - 0.5))), std::min(width - 1, int(std::floor(maxX - 0.5))),
+            std::max(0, int(std::ceil(minY - 0.5))), std::min(height - 1, int(std::floor(maxY - 0.5)))};
+  }
 
-// Interpolated 1 / distance: screen-linear for panoramas,
-// perspective-correct for pinhole cameras (as the GPU interpolates).
-struct Interpolator {
-  bool perspective;
-  double weights[3];
-  Interpolator(const Barycentric& b, const ProjectedVertex* v[3], bool isPerspective) : perspective(isPerspective) {
+  bool covers(int x, int y, Coverage& coverage) const {
+    const glm::dvec2 p(x + 0.5, y + 0.5);
+    const double e[3] = {edgeFunction(screen_[1], screen_[2], p), edgeFunction(screen_[2], screen_[0], p),
+                         edgeFunction(screen_[0], screen_[1], p)};
     double sum = 0.0;
     for (int i = 0; i < 3; ++i) {
-      weights[i] = perspective ? b.weights[i] / double(v[i]->depth) : b.weights[i];
-      sum += weights[i];
+      if (e[i] * area_ < 0.0) return false;
+      coverage.weights[i] = e[i] / area_ / double(vertices_[i]->depth);
+      sum += coverage.weights[i];
     }
-    for (double& w : weights) w /= sum;
+    for (double& w : coverage.weights) w /= sum;
+    coverage.inverseDistance = 0.0f;
+    for (int i = 0; i < 3; ++i) coverage.inverseDistance += float(coverage.weights[i]) * vertices_[i]->inverseDistance;
+    return true;
   }
-  template <typename T>
-  T operator()(T a, T b, T c) const {
-    return T(a * float(weights[0]) + b * float(weights[1]) + c * float(weights[2]));
-  }
+
+private:
+  const ProjectedVertex* const* vertices_;
+  glm::dvec2 screen_[3];
+  double area_ = 0.0;
 };
-
-// Z-buffer payload: (triangle << 2) | copy for triangles (copy 0..2, see
-// copyScreens), (vertex << 2) | 3 for a splatted point.
-constexpr uint32_t kPointPayload = 3;
-
-// Splats a vertex into the destination pixel its position falls in.
 
 uint64_t makeKey(float distance, uint32_t payload) {
   return (uint64_t(std::bit_cast<uint32_t>(distance)) << 32) | payload;
@@ -277,6 +410,7 @@ float distanceFromInverse(float inverseDistance) {
   return inverseDistance > 0.0f ? 1.0f / inverseDistance : std::numeric_limits<float>::infinity();
 }
 
+// Splats a vertex into the destination pixel its position falls in.
 void splatPoint(const ProjectedVertex& p, uint32_t vertex, int width, int height, bool wrap, std::vector<uint64_t>& zBuffer) {
   if (!p.valid) return;
   int x = int(std::floor(p.screen.x)), y = int(std::floor(p.screen.y));
@@ -286,11 +420,11 @@ void splatPoint(const ProjectedVertex& p, uint32_t vertex, int width, int height
             makeKey(distanceFromInverse(p.inverseDistance), (vertex << 2) | kPointPayload));
 }
 
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
 }  // namespace
 
 WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destination, WarpMethod method) {
-  using Clock = std::chrono::steady_clock;
-  const auto since = [](Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); };
   WarpTimings timings;
   auto stageStart = Clock::now();
   const int width = destination.width(), height = destination.height();
@@ -300,9 +434,11 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
   tbb::parallel_for(tbb::blocked_range<uint32_t>(0, vertexCount, 4096), [&](const tbb::blocked_range<uint32_t>& r) {
     for (uint32_t v = r.begin(); v != r.end(); ++v) projected[v] = projectVertex(source, v, destination);
   });
-
-  timings.projectSeconds = since(stageStart);
+  const std::unique_ptr<DirectionTable> directions =
+      equirect ? std::make_unique<DirectionTable>(destination.equirect) : nullptr;
+  timings.projectSeconds = secondsSince(stageStart);
   stageStart = Clock::now();
+
   std::vector<uint64_t> zBuffer(size_t(width) * size_t(height), kEmpty);
   std::atomic<uint64_t> rasterized{0};
   const uint32_t pointCount = vertexCount - 2;
@@ -316,6 +452,7 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
       splatPoint(projected[v], v, width, height, equirect, competes ? zBuffer : gapBuffer);
     }
   });
+
   if (method == WarpMethod::Mesh) {
     const uint32_t triangleCount = source.triangleCount();
     TRIWALK_CHECK(triangleCount < (1u << 30), "source too large for the z-buffer payload");
@@ -327,38 +464,30 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
         source.triangleVertices(t, indices);
         const ProjectedVertex* v[3] = {&projected[indices[0]], &projected[indices[1]], &projected[indices[2]]};
         if (!v[0]->valid || !v[1]->valid || !v[2]->valid) continue;
-        int firstCopy = 0, lastCopy = 0;
-        if (equirect) {
-          const float minX = std::min({v[0]->screen.x, v[1]->screen.x, v[2]->screen.x});
-          const float maxX = std::max({v[0]->screen.x, v[1]->screen.x, v[2]->screen.x});
-          if (maxX - minX > 0.5f * float(width)) {
-            // Crosses the seam: split into two copies. One still wider
-            // than half the panorama surrounds the destination's pole.
-            glm::dvec2 moved[3];
-            copyScreens(v, 1, width, moved);
-            const double span = std::max({moved[0].x, moved[1].x, moved[2].x}) - std::min({moved[0].x, moved[1].x, moved[2].x});
-            if (span > 0.5 * width) continue;
-            firstCopy = 1, lastCopy = 2;
-          }
-        }
         ++localRasterized;
-        for (int copy = firstCopy; copy <= lastCopy; ++copy) {
-          glm::dvec2 screen[3];
-          copyScreens(v, copy, width, screen);
-          const double minX = std::min({screen[0].x, screen[1].x, screen[2].x});
-          const double maxX = std::max({screen[0].x, screen[1].x, screen[2].x});
-          const double minY = std::min({screen[0].y, screen[1].y, screen[2].y});
-          const double maxY = std::max({screen[0].y, screen[1].y, screen[2].y});
-          const int x0 = std::max(0, int(std::ceil(minX - 0.5))), x1 = std::min(width - 1, int(std::floor(maxX - 0.5)));
-          const int y0 = std::max(0, int(std::ceil(minY - 0.5))), y1 = std::min(height - 1, int(std::floor(maxY - 0.5)));
-          for (int y = y0; y <= y1; ++y) {
-            for (int x = x0; x <= x1; ++x) {
-              Barycentric b;
-              if (!barycentricAt(screen, {x + 0.5, y + 0.5}, b)) continue;
-              const Interpolator interpolate(b, v, !equirect);
-              const float inverseDistance = interpolate(v[0]->inverseDistance, v[1]->inverseDistance, v[2]->inverseDistance);
+        const uint32_t payload = t << 2;
+        Coverage coverage;
+        if (equirect) {
+          const SphericalTriangle triangle(v, source.atInfinity(indices[0]));
+          if (triangle.degenerate()) continue;
+          const PixelRange range = sphericalRange(v, triangle, *directions, width, height);
+          for (int y = range.y0; y <= range.y1; ++y) {
+            for (int column = range.x0; column <= range.x1; ++column) {
+              const int x = (column % width + width) % width;
+              if (!triangle.covers(directions->at(x, y), coverage)) continue;
               atomicMin(zBuffer[size_t(y) * size_t(width) + size_t(x)],
-                        makeKey(distanceFromInverse(inverseDistance), (t << 2) | uint32_t(copy)));
+                        makeKey(distanceFromInverse(coverage.inverseDistance), payload));
+            }
+          }
+        } else {
+          const PlanarTriangle triangle(v);
+          if (triangle.degenerate()) continue;
+          const PixelRange range = triangle.range(width, height);
+          for (int y = range.y0; y <= range.y1; ++y) {
+            for (int x = range.x0; x <= range.x1; ++x) {
+              if (!triangle.covers(x, y, coverage)) continue;
+              atomicMin(zBuffer[size_t(y) * size_t(width) + size_t(x)],
+                        makeKey(distanceFromInverse(coverage.inverseDistance), payload));
             }
           }
         }
@@ -366,9 +495,9 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
       rasterized += localRasterized;
     });
   }
-
-  timings.rasterSeconds = since(stageStart);
+  timings.rasterSeconds = secondsSince(stageStart);
   stageStart = Clock::now();
+
   // Resolve: interpolate the winner's attributes at each pixel centre.
   WarpLayer layer{ColorImage(width, height), ScalarImage(width, height, std::numeric_limits<float>::infinity()),
                   std::vector<uint8_t>(size_t(width) * size_t(height), 0), rasterized.load(), WarpTimings{}};
@@ -388,18 +517,18 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
         uint32_t indices[3];
         source.triangleVertices(payload >> 2, indices);
         const ProjectedVertex* v[3] = {&projected[indices[0]], &projected[indices[1]], &projected[indices[2]]};
-        glm::dvec2 screen[3];
-        copyScreens(v, int(payload & 3u), width, screen);
-        Barycentric b;
-        // The same arithmetic as in rasterization, so the winner contains the centre.
-        const bool inside = barycentricAt(screen, {x + 0.5, y + 0.5}, b);
-        TRIWALK_CHECK(inside, "z-buffer winner does not cover its pixel");
-        const Interpolator interpolate(b, v, !equirect);
-        layer.color.pixels[i] = interpolate(source.color(indices[0]), source.color(indices[1]), source.color(indices[2]));
+        Coverage coverage;
+        // The same arithmetic as in rasterization, so the winner covers the centre.
+        const bool covered = equirect ? SphericalTriangle(v, source.atInfinity(indices[0])).covers(directions->at(x, y), coverage)
+                                      : PlanarTriangle(v).covers(x, y, coverage);
+        TRIWALK_CHECK(covered, "z-buffer winner does not cover its pixel");
+        glm::vec3 color(0.0f);
+        for (int k = 0; k < 3; ++k) color += float(coverage.weights[k]) * source.color(indices[k]);
+        layer.color.pixels[i] = color;
       }
     }
   });
-  timings.resolveSeconds = since(stageStart);
+  timings.resolveSeconds = secondsSince(stageStart);
   layer.timings = timings;
   return layer;
 }

@@ -6,8 +6,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 bash scripts/install-deps.sh build
-cmake --preset release -DTRIWALK_BUILD_TESTS=OFF >/dev/null
-cmake --build --preset release
+cmake --preset release >/dev/null
+cmake --build --preset release --target triwalk
 
 triwalk=build/release/app/triwalk
 out="${TRIWALK_OUT:-out/builtin}"

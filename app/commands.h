@@ -9,5 +9,7 @@ void registerCaptureCommand(CLI::App& app);
 void registerExportPngCommand(CLI::App& app);
 void registerBenchCommand(CLI::App& app);
 void registerSynthCommand(CLI::App& app);
+void registerDecimateCommand(CLI::App& app);
+void registerEvalCommand(CLI::App& app);
 
 }  // namespace triwalk

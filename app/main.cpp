@@ -14,6 +14,8 @@ int main(int argc, char** argv) {
   triwalk::registerCaptureCommand(app);
   triwalk::registerExportPngCommand(app);
   triwalk::registerSynthCommand(app);
+  triwalk::registerDecimateCommand(app);
+  triwalk::registerEvalCommand(app);
   triwalk::registerBenchCommand(app);
   try {
     app.parse(argc, argv);

@@ -296,16 +296,18 @@ PixelRange sphericalRange(const ProjectedVertex* v[3], const SphericalTriangle& 
   double minX = std::min({xs[0], xs[1], xs[2]}), maxX = std::max({xs[0], xs[1], xs[2]});
   // Great-circle edges bulge towards the poles between their vertices:
   // an edge spanning dtheta of longitude at latitude phi bulges by about
-  // dtheta^2 / 8 * tan(phi). Where that may reach 1/100 row (wide
-  // triangles, high latitudes) the rows come from each edge's exact
-  // extreme latitude; elsewhere a margin of 1/100 pixel covers the image
-  // points' rounding.
+  // dtheta^2 / 8 * tan(phi). Only where twice that could reach the next
+  // row of pixel centres beyond the vertices (or near a pole) do the rows
+  // come from each edge's exact extreme latitude; a margin of 1/100 pixel
+  // covers the image points' rounding.
   const double pi = std::numbers::pi;
   const int rowsFromPole = int(std::min(minY, height - maxY));
   const double longitudeSpan = (maxX - minX) * 2.0 * pi / width;
-  const bool mayBulge = rowsFromPole < height / 20 ||
-                        2.0 * longitudeSpan * longitudeSpan / 8.0 * directions.tanLatitude[size_t(rowsFromPole)] * height / pi > 0.01;
-  if (mayBulge) {
+  const double bulgeRows = longitudeSpan * longitudeSpan / 4.0 *
+                           directions.tanLatitude[size_t(std::clamp(rowsFromPole, 0, height / 2))] * height / pi;
+  const double slackAbove = minY - (std::floor(minY - 0.5) + 0.5);  // to the row centre above the vertices
+  const double slackBelow = (std::ceil(maxY - 0.5) + 0.5) - maxY;   // to the row centre below them
+  if (rowsFromPole < 2 || bulgeRows >= std::min(slackAbove, slackBelow) - 0.01) {
     for (int i = 0; i < 3; ++i) {
       const glm::dvec3 a = glm::normalize(v[i]->relative), b = glm::normalize(v[(i + 1) % 3]->relative);
       const glm::dvec3 normal = glm::cross(a, b);

@@ -90,3 +90,48 @@ Panorama renderPanorama(const AnalyticScene& scene, glm::vec3 position, int widt
 }
 
 }  // namespace triwalk::testing
+
+#include "core/dataset.h"
+#include "core/exr_io.h"
+
+namespace triwalk::testing {
+
+void writeAnalyticDataset(const std::filesystem::path& directory, int paths, int steps, int width, int probes) {
+  AnalyticScene scene;
+  scene.room = AnalyticScene::Room{{-2.0f, -2.0f, 0.0f}, {6.0f, 4.0f, 2.8f}, false};
+  scene.cylinders.push_back({{1.5f, 2.6f}, 0.25f, 0.0f, 2.8f});
+  scene.boxes.push_back({{3.0f, -1.5f, 0.0f}, {3.8f, -0.9f, 2.0f}});
+  scene.boxes.push_back({{0.4f, 0.6f, 0.0f}, {0.9f, 1.1f, 0.7f}});
+  std::filesystem::create_directories(directory / "samples");
+  std::filesystem::create_directories(directory / "probes");
+  Manifest manifest;
+  manifest.scene = "analytic-room";
+  manifest.width = width;
+  manifest.height = width / 2;
+  // Paths along y over x in [0, 4], steps over y in [0, 2].
+  for (int path = 0; path < paths; ++path) {
+    for (int step = 0; step < steps; ++step) {
+      ViewRecord sample;
+      sample.id = int(manifest.samples.size());
+      sample.file = "samples/s" + std::to_string(sample.id) + ".exr";
+      sample.position = {4.0f * float(path) / float(paths - 1), 2.0f * float(step) / float(steps - 1), 1.5f};
+      sample.path = path;
+      sample.step = step;
+      manifest.samples.push_back(sample);
+    }
+  }
+  for (int p = 0; p < probes; ++p) {
+    ViewRecord probe;
+    probe.id = p;
+    probe.file = "probes/p" + std::to_string(p) + ".exr";
+    // Fixed, irregular positions inside the sampled rectangle.
+    probe.position = {0.3f + std::fmod(1.37f * float(p + 1), 3.4f), 0.2f + std::fmod(0.71f * float(p + 1), 1.6f), 1.5f};
+    manifest.probes.push_back(probe);
+  }
+  for (const auto* views : {&manifest.samples, &manifest.probes}) {
+    for (const ViewRecord& view : *views) writePanoramaExr(directory / view.file, renderPanorama(scene, view.position, width));
+  }
+  writeManifest(directory, manifest);
+}
+
+}  // namespace triwalk::testing

@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -44,5 +45,13 @@ struct AnalyticScene {
 glm::vec3 smoothPattern(glm::vec3 point, int surface);
 
 Panorama renderPanorama(const AnalyticScene& scene, glm::vec3 position, int width);
+
+}  // namespace triwalk::testing
+
+namespace triwalk::testing {
+
+// A room with a pillar and boxes, captured on a grid of paths x steps
+// (analytic rendering) plus probes, written as a data set in directory.
+void writeAnalyticDataset(const std::filesystem::path& directory, int paths, int steps, int width, int probes);
 
 }  // namespace triwalk::testing

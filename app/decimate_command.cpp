@@ -1,0 +1,93 @@
+// `triwalk decimate`: edge-collapse decimation of the dense triangulation,
+// written as selection.json with its collapse log.
+
+#include "app/commands.h"
+#include "app/decimation_options.h"
+#include "core/edge_collapse_decimator.h"
+#include "core/errors.h"
+#include "core/progress.h"
+#include "core/selection.h"
+
+#include <cstdio>
+
+namespace triwalk {
+
+void registerDecimateCommand(CLI::App& app) {
+  struct Arguments {
+    std::string dataset, out;
+    double maxError = DecimationOptions{}.maxError;
+    int target = 0;
+    bool oneRing = false;
+    bool quiet = false;
+    ErrorArguments errors;
+  };
+  auto arguments = std::make_shared<Arguments>();
+  CLI::App* command = app.add_subcommand("decimate", "Select reference samples by edge-collapse decimation");
+  command->add_option("--dataset", arguments->dataset, "Data set directory")->required();
+  command->add_option("--out", arguments->out, "Selection file to write (selection.json)")->required();
+  command->add_option("--max-error", arguments->maxError,
+                      "Stop before a collapse whose cost exceeds this (the paper's 1.85); 0 disables")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
+  command->add_option("--target", arguments->target, "Stop at this many samples; 0 disables")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
+  command->add_flag("--one-ring", arguments->oneRing,
+                    "Also try every free sample inside the two one-rings as the placement");
+  command->add_flag("--quiet", arguments->quiet, "No progress output");
+  addErrorOptions(*command, arguments->errors);
+
+  command->callback([arguments] {
+    const Arguments& a = *arguments;
+    if (a.maxError <= 0.0 && a.target == 0) throw InputError("decimate", "give --max-error, --target or both");
+    const Dataset dataset = Dataset::open(a.dataset);
+    if (a.target > dataset.sampleCount()) {
+      throw InputError("--target", std::to_string(a.target) + " is more than the " + std::to_string(dataset.sampleCount()) +
+                                       " samples of the data set");
+    }
+    const TriangleErrorSettings settings = triangleErrorSettings(a.errors);
+    std::printf("%s\n", describeErrorSettings(settings).c_str());
+    const ViewMesh initial = ViewMesh::delaunay(samplePositions(dataset), {}, dataset.manifestPath().string());
+    std::printf("dense triangulation: %d samples, %d triangles\n", initial.vertexCount(), initial.triangleCount());
+
+    InterruptScope interruptScope;
+    DatasetTriangleErrors errors(dataset, settings, a.quiet);
+    DecimationOptions options;
+    options.maxError = a.maxError;
+    options.targetSamples = a.target;
+    options.oneRingCandidates = a.oneRing;
+    ProgressReporter costing("cost edges", 0, a.quiet);
+    EdgeCollapseDecimator decimator(initial, errors, options);
+    costing.finish();
+    const size_t expected = a.target > 0 ? size_t(initial.vertexCount() - a.target) : 0;
+    ProgressReporter progress("collapse", expected, a.quiet);
+    const StopReason reason = decimator.run(&progress);
+    progress.finish();
+    if (reason == StopReason::Interrupted) throw Interrupted();
+
+    const ViewMesh final = decimator.mesh();
+    Selection selection;
+    selection.method = "edge_collapse";
+    selection.samples = final.vertices();
+    selection.triangles = final.triangles();
+    selection.initialTriangles = initial.triangles();
+    selection.collapses = decimator.log();
+    selection.stopReason = stopReasonName(reason);
+    selection.nextCost = decimator.nextCost();
+    selection.settings = {{"max_error", a.maxError},
+                          {"target", a.target},
+                          {"one_ring", a.oneRing},
+                          {"error_width", settings.width},
+                          {"quality", describeErrorSettings(settings)}};
+    writeSelection(a.out, selection, dataset);
+
+    const DecimationStatistics& statistics = decimator.statistics();
+    std::printf("kept %d of %d samples, %d triangles; stopped: %s", final.vertexCount(), initial.vertexCount(),
+                final.triangleCount(), stopReasonName(reason));
+    if (std::isfinite(selection.nextCost)) std::printf(" (next cost %.3f)", selection.nextCost);
+    std::printf("\n%zu collapses in %.1f s; triangle errors computed %llu, cache hits %llu, stale heap entries %llu\n",
+                decimator.log().size(), costing.elapsedSeconds(), (unsigned long long)statistics.errorsComputed,
+                (unsigned long long)statistics.cacheHits, (unsigned long long)statistics.staleEntriesSkipped);
+    std::printf("wrote %s\n", a.out.c_str());
+  });
+}
+
+}  // namespace triwalk

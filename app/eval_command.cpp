@@ -1,0 +1,128 @@
+// `triwalk eval`: the paper's Table 1 for a data set and a selection, with
+// the baselines at the same sample count.
+
+#include "app/commands.h"
+#include "app/decimation_options.h"
+#include "core/baselines.h"
+#include "core/errors.h"
+#include "core/evaluation.h"
+#include "core/json_fields.h"
+#include "core/png_io.h"
+#include "core/progress.h"
+#include "core/selection.h"
+
+#include <cstdio>
+
+namespace triwalk {
+
+namespace {
+
+const char* label(const std::string& method) {
+  if (method == "initial") return "initial (a)";
+  if (method == "uniform") return "uniform (b)";
+  if (method == "edge_collapse") return "edge collapse (c)";
+  if (method == "kmedoids") return "k-medoids";
+  if (method == "random") return "random";
+  return method.c_str();
+}
+
+void writeHeatmaps(const std::filesystem::path& directory, const MethodEvaluation& evaluation, const ViewMesh& mesh,
+                   DatasetTriangleErrors& errors) {
+  std::filesystem::create_directories(directory);
+  const Dataset& dataset = errors.dataset();
+  for (int p = 0; p < dataset.probeCount(); ++p) {
+    const Triangle& triangle = mesh.triangles()[size_t(evaluation.probeTriangles[size_t(p)])];
+    ScalarImage perPixel;
+    errors.errorAt(triangle, dataset.probe(p).position, errors.probeDisplay(p), &perPixel);
+    writePng(directory / (evaluation.method + "_p" + std::to_string(dataset.probe(p).id) + ".png"),
+             heatmapImage(perPixel, 0.25f));
+  }
+}
+
+}  // namespace
+
+void registerEvalCommand(CLI::App& app) {
+  struct Arguments {
+    std::string dataset, selection, json, heatmaps;
+    unsigned seed = 1;
+    bool quiet = false;
+    ErrorArguments errors;
+  };
+  auto arguments = std::make_shared<Arguments>();
+  CLI::App* command = app.add_subcommand("eval", "Table 1: edge collapse against the dense set and the baselines");
+  command->add_option("--dataset", arguments->dataset, "Data set directory")->required();
+  command->add_option("--selection", arguments->selection, "Edge-collapse selection (from decimate)")->required();
+  command->add_option("--json", arguments->json, "Also write the rows as JSON");
+  command->add_option("--heatmaps", arguments->heatmaps, "Directory for per-probe error heatmap PNGs");
+  command->add_option("--seed", arguments->seed, "Seed of the random baseline")->capture_default_str();
+  command->add_flag("--quiet", arguments->quiet, "No progress output");
+  addErrorOptions(*command, arguments->errors);
+
+  command->callback([arguments] {
+    const Arguments& a = *arguments;
+    const Dataset dataset = Dataset::open(a.dataset);
+    const Selection selection = readSelection(a.selection, dataset);
+    if (dataset.probeCount() == 0) throw InputError(dataset.manifestPath().string(), "eval needs probes (capture --probes N)");
+    const TriangleErrorSettings settings = triangleErrorSettings(a.errors);
+    InterruptScope interruptScope;
+    DatasetTriangleErrors errors(dataset, settings, a.quiet);
+
+    const std::vector<glm::dvec2> positions = samplePositions(dataset);
+    const int count = int(selection.samples.size());
+    struct Row {
+      std::string method;
+      ViewMesh mesh;
+    };
+    std::vector<Row> rows;
+    rows.push_back({"initial", ViewMesh::delaunay(positions, {}, a.dataset)});
+    rows.push_back({"uniform", ViewMesh::delaunay(positions, uniformSelection(dataset, count), "uniform baseline")});
+    rows.push_back({"edge_collapse", selectionMesh(selection, dataset)});
+    rows.push_back({"kmedoids", ViewMesh::delaunay(positions, kMedoidsSelection(positions, count), "k-medoids baseline")});
+    rows.push_back({"random", ViewMesh::delaunay(positions, randomSelection(dataset.sampleCount(), count, a.seed),
+                                                 "random baseline")});
+
+    std::vector<MethodEvaluation> evaluations;
+    ProgressReporter progress("evaluate", rows.size(), a.quiet);
+    for (const Row& row : rows) {
+      throwIfInterrupted();
+      evaluations.push_back(evaluateMesh(row.method, row.mesh, errors));
+      if (!a.heatmaps.empty()) writeHeatmaps(a.heatmaps, evaluations.back(), row.mesh, errors);
+      progress.advance();
+    }
+    progress.finish();
+
+    std::printf("\nTable 1: %s, %d samples, %d probes; %s\n\n", dataset.manifest().scene.c_str(), dataset.sampleCount(),
+                dataset.probeCount(), describeErrorSettings(settings).c_str());
+    std::printf("| method | samples | triangles | mean error | std. deviation | probe mean error | probe std. deviation |\n");
+    std::printf("|---|---|---|---|---|---|---|\n");
+    for (const MethodEvaluation& e : evaluations) {
+      std::printf("| %s | %d | %d | %.4f | %.4f | %.4f | %.4f |\n", label(e.method), e.samples, e.triangles, e.meanError,
+                  e.stdError, e.probeMeanError, e.probeStdError);
+    }
+    const MethodEvaluation& uniform = evaluations[1];
+    const MethodEvaluation& collapse = evaluations[2];
+    const MethodEvaluation& medoids = evaluations[3];
+    std::printf("\nprobe mean error: edge collapse %.4f vs uniform %.4f (%+.1f%%) vs k-medoids %.4f (%+.1f%%)\n",
+                collapse.probeMeanError, uniform.probeMeanError,
+                100.0 * (collapse.probeMeanError - uniform.probeMeanError) / uniform.probeMeanError, medoids.probeMeanError,
+                100.0 * (collapse.probeMeanError - medoids.probeMeanError) / medoids.probeMeanError);
+
+    if (!a.json.empty()) {
+      nlohmann::json document = {{"dataset", a.dataset}, {"settings", describeErrorSettings(settings)}, {"rows", nlohmann::json::array()}};
+      for (const MethodEvaluation& e : evaluations) {
+        document["rows"].push_back({{"method", e.method},
+                                    {"samples", e.samples},
+                                    {"triangles", e.triangles},
+                                    {"mean_error", e.meanError},
+                                    {"std_error", e.stdError},
+                                    {"probe_mean_error", e.probeMeanError},
+                                    {"probe_std_error", e.probeStdError},
+                                    {"probe_errors", e.probeErrors}});
+      }
+      writeJsonFile(a.json, document);
+      std::printf("wrote %s\n", a.json.c_str());
+    }
+  });
+}
+
+}  // namespace triwalk

@@ -1,0 +1,476 @@
+#include "core/edge_collapse_decimator.h"
+
+#include "core/errors.h"
+#include "core/progress.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+namespace triwalk {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+uint64_t tripleKey(Triangle t) {
+  std::sort(t.begin(), t.end());
+  return (uint64_t(t[0]) << 42) | (uint64_t(t[1]) << 21) | uint64_t(t[2]);
+}
+
+bool hasVertex(const Triangle& t, int v) { return t[0] == v || t[1] == v || t[2] == v; }
+
+}  // namespace
+
+const char* placementName(PlacementKind kind) {
+  switch (kind) {
+    case PlacementKind::First: return "first";
+    case PlacementKind::Second: return "second";
+    case PlacementKind::Midpoint: return "midpoint";
+    case PlacementKind::OneRing: return "one-ring";
+  }
+  return "?";
+}
+
+const char* stopReasonName(StopReason reason) {
+  switch (reason) {
+    case StopReason::None: return "not stopped";
+    case StopReason::MaxError: return "the next collapse would exceed the error threshold";
+    case StopReason::TargetReached: return "reached the target sample count";
+    case StopReason::NoValidCollapse: return "no valid collapse is left";
+    case StopReason::Interrupted: return "interrupted";
+  }
+  return "?";
+}
+
+EdgeCollapseDecimator::EdgeCollapseDecimator(const ViewMesh& mesh, TriangleErrorSource& errors, DecimationOptions options)
+    : positions_(mesh.positions()), triangles_(mesh.triangles()), alive_(mesh.triangles().size(), 1),
+      incident_(mesh.positions().size()), isVertex_(mesh.positions().size(), 0), errors_(errors), options_(options) {
+  for (size_t t = 0; t < triangles_.size(); ++t) {
+    for (int v : triangles_[t]) incident_[size_t(v)].push_back(int(t));
+  }
+  for (int v : mesh.vertices()) isVertex_[size_t(v)] = 1;
+  vertexCount_ = mesh.vertexCount();
+  std::set<Edge> edges;
+  for (const Triangle& t : triangles_) {
+    for (int e = 0; e < 3; ++e) {
+      const int a = t[size_t(e)], b = t[size_t((e + 1) % 3)];
+      edges.insert({std::min(a, b), std::max(a, b)});
+    }
+  }
+  costEdges(std::vector<Edge>(edges.begin(), edges.end()));
+}
+
+int EdgeCollapseDecimator::triangleCount() const { return int(std::count(alive_.begin(), alive_.end(), char(1))); }
+
+ViewMesh EdgeCollapseDecimator::mesh() const {
+  std::vector<Triangle> triangles;
+  for (size_t t = 0; t < triangles_.size(); ++t) {
+    if (alive_[t]) triangles.push_back(canonicalTriangle(triangles_[t]));
+  }
+  std::sort(triangles.begin(), triangles.end());
+  return ViewMesh(positions_, std::move(triangles));
+}
+
+// ------------------------------------------------------------ topology --
+
+std::vector<int> EdgeCollapseDecimator::neighboursOf(int vertex) const {
+  std::vector<int> neighbours;
+  for (int t : incident_[size_t(vertex)]) {
+    for (int v : triangles_[size_t(t)]) {
+      if (v != vertex) neighbours.push_back(v);
+    }
+  }
+  std::sort(neighbours.begin(), neighbours.end());
+  neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+  return neighbours;
+}
+
+std::vector<int> EdgeCollapseDecimator::edgeTriangles(int a, int b) const {
+  std::vector<int> shared;
+  for (int t : incident_[size_t(a)]) {
+    if (hasVertex(triangles_[size_t(t)], b)) shared.push_back(t);
+  }
+  return shared;
+}
+
+std::vector<int> EdgeCollapseDecimator::boundaryNeighbours(int vertex) const {
+  std::vector<int> result;
+  for (int w : neighboursOf(vertex)) {
+    if (edgeTriangles(vertex, w).size() == 1) result.push_back(w);
+  }
+  return result;
+}
+
+// Whether a sample lies on the open segment between two others (exact).
+bool EdgeCollapseDecimator::onOpenSegment(int sample, int from, int to) const {
+  const glm::dvec2 p = positions_[size_t(sample)], a = positions_[size_t(from)], b = positions_[size_t(to)];
+  if (orientation(a, b, p) != 0) return false;
+  const double along = glm::dot(p - a, b - a);
+  return along > 0.0 && along < glm::dot(b - a, b - a);
+}
+
+// ------------------------------------------------------------- validity --
+
+bool EdgeCollapseDecimator::simulate(int a, int b, int placement, PlacementKind kind, Plan& plan) const {
+  const std::vector<int> shared = edgeTriangles(a, b);
+  if (shared.empty() || shared.size() > 2) return false;
+
+  // Link condition: the common neighbours are exactly the opposite vertices.
+  std::vector<int> opposite;
+  for (int t : shared) {
+    for (int v : triangles_[size_t(t)]) {
+      if (v != a && v != b) opposite.push_back(v);
+    }
+  }
+  std::sort(opposite.begin(), opposite.end());
+  const std::vector<int> na = neighboursOf(a), nb = neighboursOf(b);
+  std::vector<int> common;
+  std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
+  if (common != opposite) return false;
+
+  // The boundary must not move.
+  const std::vector<int> boundaryA = boundaryNeighbours(a), boundaryB = boundaryNeighbours(b);
+  const bool onBoundaryA = !boundaryA.empty(), onBoundaryB = !boundaryB.empty();
+  const bool boundaryEdge = shared.size() == 1;
+  if (onBoundaryA && onBoundaryB && !boundaryEdge) return false;  // would pinch the mesh
+  if (onBoundaryA != onBoundaryB) {
+    const int boundaryVertex = onBoundaryA ? a : b;
+    const std::vector<int>& chain = onBoundaryA ? boundaryA : boundaryB;
+    if (chain.size() != 2) return false;
+    if (placement != boundaryVertex &&
+        !(onOpenSegment(boundaryVertex, chain[0], chain[1]) && onOpenSegment(placement, chain[0], chain[1]))) {
+      return false;
+    }
+  } else if (onBoundaryA && onBoundaryB) {
+    // Boundary chain outerA - a - b - outerB becomes outerA - p - outerB.
+    if (boundaryA.size() != 2 || boundaryB.size() != 2) return false;
+    const int outerA = boundaryA[0] == b ? boundaryA[1] : boundaryA[0];
+    const int outerB = boundaryB[0] == a ? boundaryB[1] : boundaryB[0];
+    if (outerA == outerB) return false;  // the mesh would lose its last area
+    if (placement == a) {
+      if (!onOpenSegment(b, a, outerB)) return false;
+    } else if (placement == b) {
+      if (!onOpenSegment(a, outerA, b)) return false;
+    } else if (!(onOpenSegment(a, outerA, outerB) && onOpenSegment(b, outerA, outerB) &&
+                 onOpenSegment(placement, outerA, outerB))) {
+      return false;
+    }
+  }
+
+  // The updated triangles: every triangle of a or b but the edge's own,
+  // with a and b replaced by the placement; all strictly counter-clockwise.
+  plan.placement = placement;
+  plan.kind = kind;
+  plan.removed.clear();
+  plan.added.clear();
+  for (int vertex : {a, b}) {
+    for (int t : incident_[size_t(vertex)]) {
+      if (std::find(plan.removed.begin(), plan.removed.end(), t) == plan.removed.end()) plan.removed.push_back(t);
+    }
+  }
+  std::sort(plan.removed.begin(), plan.removed.end());
+  for (int t : plan.removed) {
+    if (std::find(shared.begin(), shared.end(), t) != shared.end()) continue;
+    Triangle updated = triangles_[size_t(t)];
+    for (int& v : updated) {
+      if (v == a || v == b) v = placement;
+    }
+    if (orientation(positions_[size_t(updated[0])], positions_[size_t(updated[1])], positions_[size_t(updated[2])]) <= 0) {
+      return false;
+    }
+    plan.added.push_back(canonicalTriangle(updated));
+  }
+  if (plan.added.empty()) return false;
+  // A canonical order makes the mean (a float sum) independent of
+  // triangle ids, i.e. of the history that led to this mesh.
+  std::sort(plan.added.begin(), plan.added.end());
+  std::vector<uint64_t> keys;
+  for (const Triangle& t : plan.added) keys.push_back(tripleKey(t));
+  std::sort(keys.begin(), keys.end());
+  return std::adjacent_find(keys.begin(), keys.end()) == keys.end();
+}
+
+std::vector<std::pair<int, PlacementKind>> EdgeCollapseDecimator::candidates(int a, int b, EdgeState& state) const {
+  std::vector<std::pair<int, PlacementKind>> result = {{a, PlacementKind::First}, {b, PlacementKind::Second}};
+  const glm::dvec2 midpoint = 0.5 * (positions_[size_t(a)] + positions_[size_t(b)]);
+  state.midpointSample = -1;
+  state.midpointDistance = kInfinity;
+  for (int s = 0; s < int(positions_.size()); ++s) {
+    if (isVertex_[size_t(s)] && s != a && s != b) continue;
+    const double d = glm::length(positions_[size_t(s)] - midpoint);
+    if (d < state.midpointDistance) state.midpointDistance = d, state.midpointSample = s;
+  }
+  if (state.midpointSample != a && state.midpointSample != b) result.push_back({state.midpointSample, PlacementKind::Midpoint});
+
+  if (options_.oneRingCandidates) {
+    std::vector<int> ring = incident_[size_t(a)];
+    ring.insert(ring.end(), incident_[size_t(b)].begin(), incident_[size_t(b)].end());
+    for (int s = 0; s < int(positions_.size()); ++s) {
+      if (isVertex_[size_t(s)] || s == state.midpointSample) continue;
+      for (int t : ring) {
+        const Triangle& tri = triangles_[size_t(t)];
+        bool inside = true;
+        for (int e = 0; e < 3 && inside; ++e) {
+          inside = orientation(positions_[size_t(tri[size_t(e)])], positions_[size_t(tri[size_t((e + 1) % 3)])],
+                               positions_[size_t(s)]) >= 0;
+        }
+        if (inside) {
+          result.push_back({s, PlacementKind::OneRing});
+          break;
+        }
+      }
+    }
+  }
+  return result;
+}
+
+// --------------------------------------------------------------- costs --
+
+void EdgeCollapseDecimator::ensureErrors(const std::vector<Triangle>& triangles) {
+  std::vector<Triangle> missing;
+  std::set<uint64_t> queued;
+  for (const Triangle& t : triangles) {
+    const uint64_t key = tripleKey(t);
+    if (cache_.count(key) || !queued.insert(key).second) {
+      ++statistics_.cacheHits;
+      continue;
+    }
+    missing.push_back(t);
+  }
+  if (missing.empty()) return;
+  std::vector<double> computed(missing.size());
+  errors_.computeErrors(missing, computed);
+  for (size_t i = 0; i < missing.size(); ++i) cache_[tripleKey(missing[i])] = computed[i];
+  statistics_.errorsComputed += missing.size();
+}
+
+double EdgeCollapseDecimator::meanError(const std::vector<Triangle>& triangles) {
+  double sum = 0.0;
+  for (const Triangle& t : triangles) sum += cache_.at(tripleKey(t));
+  return sum / double(triangles.size());
+}
+
+double EdgeCollapseDecimator::triangleError(const Triangle& triangle) {
+  ensureErrors({triangle});
+  return cache_.at(tripleKey(triangle));
+}
+
+// Costs a batch of edges: every candidate collapse is simulated first, the
+// triangle errors they need are computed together (in parallel), then each
+// edge takes its cheapest valid candidate (ties: candidate order).
+void EdgeCollapseDecimator::costEdges(const std::vector<Edge>& edges) {
+  struct Candidate {
+    size_t edge;
+    Plan plan;
+  };
+  std::vector<Candidate> plans;
+  std::vector<EdgeState> states(edges.size());
+  std::vector<Triangle> needed;
+  for (size_t i = 0; i < edges.size(); ++i) {
+    const auto [a, b] = edges[i];
+    for (const auto& [placement, kind] : candidates(a, b, states[i])) {
+      Plan plan;
+      if (!simulate(a, b, placement, kind, plan)) continue;
+      needed.insert(needed.end(), plan.added.begin(), plan.added.end());
+      plans.push_back({i, std::move(plan)});
+    }
+  }
+  ensureErrors(needed);
+  for (Candidate& candidate : plans) {
+    EdgeState& state = states[candidate.edge];
+    const double cost = meanError(candidate.plan.added);
+    if (cost < state.cost) {
+      state.cost = cost;
+      state.plan = std::move(candidate.plan);
+    }
+  }
+  for (size_t i = 0; i < edges.size(); ++i) {
+    EdgeState& state = states[i];
+    state.stamp = nextStamp_++;
+    edges_[edges[i]] = state;
+    ++statistics_.edgesCosted;
+    if (std::isfinite(state.cost)) heap_.push({state.cost, edges[i].first, edges[i].second, state.stamp});
+  }
+}
+
+// ------------------------------------------------------------ collapse --
+
+// The heap's top after dropping stale entries and re-checking the top's
+// cost, or nullptr if no valid collapse is left.
+const EdgeCollapseDecimator::HeapEntry* EdgeCollapseDecimator::peekValid() {
+  while (!heap_.empty()) {
+    const HeapEntry top = heap_.top();
+    const auto state = edges_.find({top.first, top.second});
+    if (state == edges_.end() || state->second.stamp != top.stamp) {
+      heap_.pop();
+      ++statistics_.staleEntriesSkipped;
+      continue;
+    }
+    // A sample far away may have been freed or taken since this edge was
+    // costed: cost it again; if anything changed, the new entry competes.
+    const double oldCost = state->second.cost;
+    const int oldPlacement = state->second.plan.placement;
+    heap_.pop();
+    costEdges({{top.first, top.second}});
+    const EdgeState& fresh = edges_.at({top.first, top.second});
+    if (fresh.cost == oldCost && fresh.plan.placement == oldPlacement) return &heap_.top();
+    ++statistics_.collapseChecksFailed;
+  }
+  return nullptr;
+}
+
+std::optional<Collapse> EdgeCollapseDecimator::peekNextCollapse() {
+  const HeapEntry* top = peekValid();
+  if (!top) return std::nullopt;
+  const EdgeState& state = edges_.at({top->first, top->second});
+  Collapse collapse;
+  collapse.first = top->first;
+  collapse.second = top->second;
+  collapse.placement = state.plan.placement;
+  collapse.kind = state.plan.kind;
+  collapse.cost = state.cost;
+  for (int t : state.plan.removed) collapse.removed.push_back(canonicalTriangle(triangles_[size_t(t)]));
+  collapse.added = state.plan.added;
+  std::sort(collapse.removed.begin(), collapse.removed.end());
+  return collapse;
+}
+
+double EdgeCollapseDecimator::nextCost() {
+  const HeapEntry* top = peekValid();
+  return top ? top->cost : kInfinity;
+}
+
+bool EdgeCollapseDecimator::isValidCollapse(int first, int second, int placement) const {
+  if (placement != first && placement != second && isVertex_[size_t(placement)]) return false;
+  Plan plan;
+  return simulate(first, second, placement, PlacementKind::First, plan);
+}
+
+void EdgeCollapseDecimator::apply(const Edge& edge, const EdgeState& state) {
+  const auto [a, b] = edge;
+  const Plan& plan = state.plan;
+  Collapse record;
+  record.first = a;
+  record.second = b;
+  record.placement = plan.placement;
+  record.kind = plan.kind;
+  record.cost = state.cost;
+  for (int t : plan.removed) {
+    alive_[size_t(t)] = 0;
+    record.removed.push_back(canonicalTriangle(triangles_[size_t(t)]));
+    for (int v : triangles_[size_t(t)]) {
+      auto& list = incident_[size_t(v)];
+      list.erase(std::find(list.begin(), list.end(), t));
+    }
+  }
+  for (const Triangle& t : plan.added) {
+    const int id = int(triangles_.size());
+    triangles_.push_back(t);
+    alive_.push_back(1);
+    for (int v : t) incident_[size_t(v)].push_back(id);
+  }
+  record.added = plan.added;
+  std::sort(record.removed.begin(), record.removed.end());
+  log_.push_back(std::move(record));
+
+  isVertex_[size_t(a)] = isVertex_[size_t(b)] = 0;
+  isVertex_[size_t(plan.placement)] = 1;
+  vertexCount_ -= 1;
+  for (auto it = edges_.begin(); it != edges_.end();) {
+    it = (it->first.first == a || it->first.second == a || it->first.first == b || it->first.second == b) ? edges_.erase(it)
+                                                                                                         : std::next(it);
+  }
+
+  // Re-cost the edges whose updated triangles changed (those touching p
+  // or a neighbour of p), and those whose midpoint candidate changed: it
+  // was p, or a or b is now free and nearer.
+  std::set<Edge> affected;
+  std::vector<int> around = neighboursOf(plan.placement);
+  around.push_back(plan.placement);
+  for (int w : around) {
+    for (int x : neighboursOf(w)) affected.insert({std::min(w, x), std::max(w, x)});
+  }
+  for (const auto& [other, otherState] : edges_) {
+    const glm::dvec2 midpoint = 0.5 * (positions_[size_t(other.first)] + positions_[size_t(other.second)]);
+    bool changed = otherState.midpointSample == plan.placement;
+    for (int freed : {a, b}) {
+      changed |= freed != plan.placement && glm::length(positions_[size_t(freed)] - midpoint) < otherState.midpointDistance;
+    }
+    if (changed) affected.insert(other);
+  }
+  costEdges(std::vector<Edge>(affected.begin(), affected.end()));
+}
+
+bool EdgeCollapseDecimator::step() {
+  if (options_.targetSamples > 0 && vertexCount_ <= options_.targetSamples) {
+    stopReason_ = StopReason::TargetReached;
+    return false;
+  }
+  const HeapEntry* top = peekValid();
+  if (!top) {
+    stopReason_ = StopReason::NoValidCollapse;
+    return false;
+  }
+  if (options_.maxError > 0.0 && top->cost > options_.maxError) {
+    stopReason_ = StopReason::MaxError;
+    return false;
+  }
+  const Edge edge{top->first, top->second};
+  heap_.pop();
+  const EdgeState state = edges_.at(edge);
+  apply(edge, state);
+  stopReason_ = StopReason::None;
+  return true;
+}
+
+StopReason EdgeCollapseDecimator::run(ProgressReporter* progress) {
+  while (true) {
+    if (interruptRequested()) {
+      stopReason_ = StopReason::Interrupted;
+      break;
+    }
+    if (!step()) break;
+    if (progress) {
+      char status[96];
+      std::snprintf(status, sizeof status, "samples %d  cost %.3f", vertexCount_, log_.back().cost);
+      progress->setStatus(status);
+      progress->advance();
+    }
+  }
+  return stopReason_;
+}
+
+// -------------------------------------------------------------- replay --
+
+namespace {
+
+std::vector<Triangle> replace(std::vector<Triangle> triangles, const std::vector<Triangle>& remove,
+                              const std::vector<Triangle>& add) {
+  for (const Triangle& t : remove) {
+    const auto it = std::find(triangles.begin(), triangles.end(), t);
+    TRIWALK_CHECK(it != triangles.end(), "collapse log does not match the mesh");
+    triangles.erase(it);
+  }
+  triangles.insert(triangles.end(), add.begin(), add.end());
+  std::sort(triangles.begin(), triangles.end());
+  return triangles;
+}
+
+}  // namespace
+
+std::vector<Triangle> replayForward(std::vector<Triangle> initial, std::span<const Collapse> log, size_t steps) {
+  for (size_t i = 0; i < std::min(steps, log.size()); ++i) initial = replace(std::move(initial), log[i].removed, log[i].added);
+  return initial;
+}
+
+std::vector<Triangle> replayBackward(std::vector<Triangle> final, std::span<const Collapse> log, size_t steps) {
+  for (size_t i = 0; i < std::min(steps, log.size()); ++i) {
+    const Collapse& collapse = log[log.size() - 1 - i];
+    final = replace(std::move(final), collapse.added, collapse.removed);
+  }
+  return final;
+}
+
+}  // namespace triwalk

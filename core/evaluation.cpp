@@ -1,0 +1,41 @@
+#include "core/evaluation.h"
+
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+
+namespace triwalk {
+
+void meanAndDeviation(const std::vector<double>& values, double& mean, double& deviation) {
+  mean = deviation = 0.0;
+  if (values.empty()) return;
+  for (double v : values) mean += v;
+  mean /= double(values.size());
+  for (double v : values) deviation += (v - mean) * (v - mean);
+  deviation = std::sqrt(deviation / double(values.size()));
+}
+
+MethodEvaluation evaluateMesh(const std::string& method, const ViewMesh& mesh, DatasetTriangleErrors& errors) {
+  MethodEvaluation evaluation;
+  evaluation.method = method;
+  evaluation.samples = mesh.vertexCount();
+  evaluation.triangles = mesh.triangleCount();
+  evaluation.triangleErrors.resize(mesh.triangles().size());
+  errors.computeErrors(mesh.triangles(), evaluation.triangleErrors);
+  meanAndDeviation(evaluation.triangleErrors, evaluation.meanError, evaluation.stdError);
+
+  const Dataset& dataset = errors.dataset();
+  evaluation.probeErrors.resize(size_t(dataset.probeCount()));
+  evaluation.probeTriangles.resize(size_t(dataset.probeCount()));
+  for (int p = 0; p < dataset.probeCount(); ++p) {
+    evaluation.probeTriangles[size_t(p)] = mesh.locate(glm::dvec2(dataset.probe(p).position));
+  }
+  tbb::parallel_for(0, dataset.probeCount(), [&](int p) {
+    const Triangle& triangle = mesh.triangles()[size_t(evaluation.probeTriangles[size_t(p)])];
+    evaluation.probeErrors[size_t(p)] = errors.errorAt(triangle, dataset.probe(p).position, errors.probeDisplay(p)).total;
+  });
+  meanAndDeviation(evaluation.probeErrors, evaluation.probeMeanError, evaluation.probeStdError);
+  return evaluation;
+}
+
+}  // namespace triwalk

@@ -1,0 +1,32 @@
+#pragma once
+// The paper's Table 1 for a data set (DESIGN.md, "Evaluation"): for each
+// selection method, samples, triangles, mean and standard deviation of the
+// triangle error, and of the error at the held-out probes (each probe
+// reconstructed from the three vertices of the triangle around it, the
+// nearest triangle outside the covered area).
+
+#include "core/triangle_error.h"
+#include "core/view_mesh.h"
+
+#include <string>
+#include <vector>
+
+namespace triwalk {
+
+struct MethodEvaluation {
+  std::string method;  // initial, uniform, edge_collapse, kmedoids, random
+  int samples = 0;
+  int triangles = 0;
+  double meanError = 0.0, stdError = 0.0;            // over triangles
+  double probeMeanError = 0.0, probeStdError = 0.0;  // over probes
+  std::vector<double> triangleErrors;
+  std::vector<double> probeErrors;
+  std::vector<int> probeTriangles;  // the triangle each probe was reconstructed from
+};
+
+MethodEvaluation evaluateMesh(const std::string& method, const ViewMesh& mesh, DatasetTriangleErrors& errors);
+
+// Mean and population standard deviation.
+void meanAndDeviation(const std::vector<double>& values, double& mean, double& deviation);
+
+}  // namespace triwalk

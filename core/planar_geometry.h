@@ -1,0 +1,30 @@
+#pragma once
+// Exact planar geometry from CGAL (kept to one translation unit,
+// core/cgal_geometry.cpp, because CGAL is slow to compile): the Delaunay
+// triangulation of the sample positions and the orientation predicate
+// every validity test of the decimator rests on.
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <span>
+#include <vector>
+
+namespace triwalk {
+
+using Triangle = std::array<int, 3>;  // indices, counter-clockwise
+
+// Delaunay triangulation (exact predicates) of distinct points. Triangles
+// are counter-clockwise, each rotated to start at its smallest index, and
+// sorted, so the result does not depend on CGAL's internal order. Empty
+// if all points are collinear or fewer than 3.
+std::vector<Triangle> delaunayTriangles(std::span<const glm::dvec2> points);
+
+// Exact sign of the orientation of (a, b, c): +1 counter-clockwise,
+// -1 clockwise, 0 collinear.
+int orientation(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c);
+
+// Rotates a triangle to start at its smallest index (same orientation).
+Triangle canonicalTriangle(Triangle triangle);
+
+}  // namespace triwalk

@@ -1,0 +1,103 @@
+#include "core/triangle_error.h"
+
+#include "core/errors.h"
+#include "core/progress.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace triwalk {
+
+DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const TriangleErrorSettings& settings, bool quiet)
+    : dataset_(dataset), settings_(settings) {
+  dataset.downsamplingFactor(settings.width, "--error-width");
+  const int samples = dataset.sampleCount(), probes = dataset.probeCount();
+  sources_.resize(size_t(samples));
+  sampleDisplay_.resize(size_t(samples));
+  probeDisplay_.resize(size_t(probes));
+  for (int i = 0; i < samples; ++i) positions_.emplace_back(dataset.sample(i).position);
+
+  ProgressReporter progress("load " + std::to_string(settings.width) + "x" + std::to_string(settings.width / 2),
+                            size_t(samples + probes), quiet);
+  tbb::parallel_for(0, samples + probes, [&](int i) {
+    if (interruptRequested()) return;
+    const bool isSample = i < samples;
+    const ViewRecord& view = isSample ? dataset.sample(i) : dataset.probe(i - samples);
+    const Panorama panorama = dataset.loadView(view, settings.width);
+    if (isSample) {
+      sources_[size_t(i)] = std::make_unique<WarpSource>(panorama, view.position, degreesToRadians(view.yawDegrees),
+                                                         settings.synthesis.warp);
+      sampleDisplay_[size_t(i)] = toDisplayColors(panorama.color);
+    } else {
+      probeDisplay_[size_t(i - samples)] = toDisplayColors(panorama.color);
+    }
+    progress.advance();
+  });
+  progress.finish();
+  throwIfInterrupted();
+}
+
+TriangleDestinations parseTriangleDestinations(const std::string& name) {
+  if (name == "centroid") return TriangleDestinations::Centroid;
+  if (name == "quadrature") return TriangleDestinations::Quadrature;
+  throw InputError("--triangle-destinations", "unknown choice '" + name + "' (use centroid or quadrature)");
+}
+
+std::vector<std::pair<int, double>> DatasetTriangleErrors::destinationsOf(const Triangle& triangle) const {
+  const glm::dvec2 a = positions_[size_t(triangle[0])], b = positions_[size_t(triangle[1])], c = positions_[size_t(triangle[2])];
+  const glm::dvec2 centroid = (a + b + c) / 3.0;
+  std::vector<glm::dvec2> points = {centroid};
+  if (settings_.destinations == TriangleDestinations::Quadrature) {
+    points.push_back((centroid + a + b) / 3.0);
+    points.push_back((centroid + b + c) / 3.0);
+    points.push_back((centroid + c + a) / 3.0);
+  }
+  std::vector<std::pair<int, double>> destinations;
+  for (const glm::dvec2& point : points) {
+    int best = -1;
+    double bestDistance = std::numeric_limits<double>::max();
+    for (int s = 0; s < int(positions_.size()); ++s) {
+      if (s == triangle[0] || s == triangle[1] || s == triangle[2]) continue;
+      const double d = glm::length(positions_[size_t(s)] - point);
+      if (d < bestDistance) bestDistance = d, best = s;
+    }
+    TRIWALK_CHECK(best >= 0, "a triangle needs a destination sample besides its vertices");
+    const auto same = std::find_if(destinations.begin(), destinations.end(), [&](const auto& d) { return d.first == best; });
+    if (same != destinations.end()) {
+      same->second += 1.0 / double(points.size());
+    } else {
+      destinations.emplace_back(best, 1.0 / double(points.size()));
+    }
+  }
+  return destinations;
+}
+
+SynthesizedView DatasetTriangleErrors::synthesize(std::span<const int> references, glm::vec3 position) const {
+  std::vector<const WarpSource*> sources;
+  for (int reference : references) sources.push_back(sources_[size_t(reference)].get());
+  const int width = settings_.width;
+  return synthesizeView(sources, DestinationCamera::panorama(position, width, width / 2), settings_.synthesis);
+}
+
+ReconstructionError DatasetTriangleErrors::errorAt(std::span<const int> references, glm::vec3 position,
+                                                   const ColorImage& truthDisplay, ScalarImage* perPixel) const {
+  const SynthesizedView view = synthesize(references, position);
+  return reconstructionError(toDisplayColors(view.blended.color), view.blended.hole, truthDisplay, settings_.error,
+                             perPixel);
+}
+
+void DatasetTriangleErrors::computeErrors(std::span<const Triangle> triangles, std::span<double> errors) {
+  tbb::parallel_for(size_t(0), triangles.size(), [&](size_t i) {
+    const Triangle& triangle = triangles[i];
+    double error = 0.0;
+    for (const auto& [destination, weight] : destinationsOf(triangle)) {
+      error += weight * errorAt(triangle, dataset_.sample(destination).position, sampleDisplay_[size_t(destination)]).total;
+    }
+    errors[i] = error;
+    ++evaluations_;
+  });
+}
+
+}  // namespace triwalk

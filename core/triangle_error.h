@@ -1,0 +1,81 @@
+#pragma once
+// The error of a triangle of reference views (DESIGN.md, "Triangle error
+// and decimation"): warp its three vertices' panoramas to destinations
+// inside it, blend, and compare with the panoramas captured there
+// (E = alpha R + beta B). A destination is the nearest dense sample to a
+// point that is not a vertex of the triangle. The paper (and DESIGN.md)
+// use the centroid alone; "quadrature" also uses the centroids of the
+// three sub-triangles (centroid, two vertices), weighted equally, so that
+// long or large triangles are judged over their area, not at one point.
+// Everything is held at the decimation resolution in memory.
+
+#include "core/dataset.h"
+#include "core/planar_geometry.h"
+#include "core/reconstruction_error.h"
+#include "core/view_synthesis.h"
+
+#include <atomic>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace triwalk {
+
+// Where decimation gets triangle errors from: the data set here, synthetic
+// costs in unit tests.
+class TriangleErrorSource {
+public:
+  virtual ~TriangleErrorSource() = default;
+  // E of each triangle (sample indices), in order; may run in parallel.
+  virtual void computeErrors(std::span<const Triangle> triangles, std::span<double> errors) = 0;
+};
+
+enum class TriangleDestinations { Centroid, Quadrature };
+
+// Parses "centroid" or "quadrature"; throws InputError.
+TriangleDestinations parseTriangleDestinations(const std::string& name);
+
+struct TriangleErrorSettings {
+  int width = 256;  // panorama width the errors are computed at
+  TriangleDestinations destinations = TriangleDestinations::Quadrature;
+  SynthesisOptions synthesis;
+  ErrorOptions error;
+};
+
+class DatasetTriangleErrors final : public TriangleErrorSource {
+public:
+  // Loads every sample (and probe) at the settings' width, in parallel,
+  // with progress; throws InputError for bad files.
+  DatasetTriangleErrors(const Dataset& dataset, const TriangleErrorSettings& settings, bool quiet);
+
+  void computeErrors(std::span<const Triangle> triangles, std::span<double> errors) override;
+
+  // The destination samples of a triangle with their weights (summing to
+  // 1): for each point (centroid, sub-triangle centroids), the nearest
+  // sample that is not a vertex (ties: the lower index).
+  std::vector<std::pair<int, double>> destinationsOf(const Triangle& triangle) const;
+
+  // Reconstruction of an arbitrary position from reference samples,
+  // compared with a panorama's display colors.
+  ReconstructionError errorAt(std::span<const int> references, glm::vec3 position, const ColorImage& truthDisplay,
+                              ScalarImage* perPixel = nullptr) const;
+  SynthesizedView synthesize(std::span<const int> references, glm::vec3 position) const;
+
+  const Dataset& dataset() const { return dataset_; }
+  const TriangleErrorSettings& settings() const { return settings_; }
+  const ColorImage& sampleDisplay(int sample) const { return sampleDisplay_[size_t(sample)]; }
+  const ColorImage& probeDisplay(int probe) const { return probeDisplay_[size_t(probe)]; }
+  const WarpSource& source(int sample) const { return *sources_[size_t(sample)]; }
+  uint64_t evaluations() const { return evaluations_; }
+
+private:
+  const Dataset& dataset_;
+  TriangleErrorSettings settings_;
+  std::vector<std::unique_ptr<WarpSource>> sources_;
+  std::vector<ColorImage> sampleDisplay_;
+  std::vector<ColorImage> probeDisplay_;
+  std::vector<glm::dvec2> positions_;
+  std::atomic<uint64_t> evaluations_{0};
+};
+
+}  // namespace triwalk

@@ -1,0 +1,314 @@
+// Edge-collapse decimation on tiny hand-built meshes with exact expected
+// behavior, and against a decimator rebuilt from scratch at every step.
+
+#include "core/edge_collapse_decimator.h"
+#include "core/atomic_file.h"
+#include "core/errors.h"
+#include "core/view_mesh.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <set>
+
+namespace triwalk {
+
+namespace {
+
+// Triangle errors from a formula: the area (bigger triangles reconstruct
+// worse) plus a small per-triangle term so that costs never tie.
+class SyntheticErrors final : public TriangleErrorSource {
+public:
+  explicit SyntheticErrors(std::vector<glm::dvec2> positions) : positions_(std::move(positions)) {}
+  void computeErrors(std::span<const Triangle> triangles, std::span<double> errors) override {
+    for (size_t i = 0; i < triangles.size(); ++i) {
+      const Triangle& t = triangles[i];
+      const glm::dvec2 a = positions_[size_t(t[0])], b = positions_[size_t(t[1])], c = positions_[size_t(t[2])];
+      const double area = 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+      std::array<int, 3> sorted = t;
+      std::sort(sorted.begin(), sorted.end());
+      errors[i] = area + 1e-4 * double((sorted[0] * 31 + sorted[1] * 17 + sorted[2] * 7) % 101);
+      ++evaluations;
+    }
+  }
+  int evaluations = 0;
+
+private:
+  std::vector<glm::dvec2> positions_;
+};
+
+double signedArea(const ViewMesh& mesh) {
+  double area = 0.0;
+  for (const Triangle& t : mesh.triangles()) {
+    const glm::dvec2 a = mesh.position(t[0]), b = mesh.position(t[1]), c = mesh.position(t[2]);
+    area += 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+  }
+  return area;
+}
+
+// Every triangle counter-clockwise, every edge in at most two triangles,
+// and no edge twice in the same direction (a consistently oriented manifold).
+void checkValidMesh(const ViewMesh& mesh) {
+  std::map<std::pair<int, int>, int> directed;
+  for (const Triangle& t : mesh.triangles()) {
+    CHECK(orientation(mesh.position(t[0]), mesh.position(t[1]), mesh.position(t[2])) > 0);
+    for (int e = 0; e < 3; ++e) CHECK(++directed[{t[size_t(e)], t[size_t((e + 1) % 3)]}] == 1);
+  }
+}
+
+std::vector<glm::dvec2> grid(int columns, int rows) {
+  std::vector<glm::dvec2> points;
+  for (int x = 0; x < columns; ++x) {
+    for (int y = 0; y < rows; ++y) points.emplace_back(double(x), double(y));
+  }
+  return points;
+}
+
+}  // namespace
+
+TEST_CASE("a collapse that violates the link condition is refused") {
+  //  S3(0,8) ------------------- S2(8,8)
+  //    |  \          X(4,5)    /   |
+  //    |     v1(2,2)  Y(4,3)  v2(6,2)
+  //  S0(0,0) ------------------- S1(8,0)
+  // v1, v2 and X are pairwise adjacent around the inner vertex Y, but
+  // (v1, v2, X) is not a triangle: collapsing v1-v2 would fold the mesh.
+  enum { S0, S1, S2, S3, v1, v2, X, Y };
+  const std::vector<glm::dvec2> positions = {{0, 0}, {8, 0}, {8, 8}, {0, 8}, {2, 2}, {6, 2}, {4, 5}, {4, 3}};
+  const std::vector<Triangle> triangles = {{v1, v2, Y}, {v2, X, Y}, {X, v1, Y},  {S0, S1, v2}, {S0, v2, v1},
+                                           {S1, S2, v2}, {v2, S2, X}, {S2, S3, X}, {S3, v1, X},  {S3, S0, v1}};
+  const ViewMesh mesh(positions, triangles);
+  checkValidMesh(mesh);
+  SyntheticErrors errors(positions);
+  EdgeCollapseDecimator decimator(mesh, errors, DecimationOptions{0.0, 3, false});
+  CHECK_FALSE(decimator.isValidCollapse(v1, v2, v1));
+  CHECK_FALSE(decimator.isValidCollapse(v1, v2, v2));
+  // The same kind of collapse where the link condition holds is allowed.
+  CHECK(decimator.isValidCollapse(v1, Y, v1));
+}
+
+TEST_CASE("a collapse that flips a triangle is refused") {
+  //        B(-1,1)       A(1,0.2)
+  //             \  v1(0,0) ----- v2(2,0)
+  //        C(-1,-1)      D(1,-0.2)
+  // Moving v1 onto v2 turns (v1, A, B) into (v2, A, B), which is clockwise.
+  enum { v1, v2, A, B, C, D };
+  std::vector<glm::dvec2> positions = {{0, 0}, {2, 0}, {1, 0.2}, {-1, 1}, {-1, -1}, {1, -0.2}};
+  const std::vector<Triangle> triangles = {{v1, v2, A}, {v1, A, B}, {v1, B, C}, {v1, C, D}, {v1, D, v2}};
+  {
+    const ViewMesh mesh(positions, triangles);
+    checkValidMesh(mesh);
+    SyntheticErrors errors(positions);
+    EdgeCollapseDecimator decimator(mesh, errors, DecimationOptions{0.0, 3, false});
+    CHECK_FALSE(decimator.isValidCollapse(v1, v2, v2));
+  }
+  // With A and D moved out to make the ring convex, the same collapse is fine.
+  positions[A] = {1, 1};
+  positions[D] = {1, -1};
+  const ViewMesh convex(positions, triangles);
+  SyntheticErrors errors(positions);
+  EdgeCollapseDecimator decimator(convex, errors, DecimationOptions{0.0, 3, false});
+  CHECK(decimator.isValidCollapse(v1, v2, v2));
+}
+
+TEST_CASE("boundary: corners never move, straight boundary vertices may go, the covered area never shrinks") {
+  // 5 x 3 grid, decimated as far as validity allows.
+  //   (0,2) . . . (4,2)
+  //     .   . . .   .
+  //   (0,0) . . . (4,0)
+  const std::vector<glm::dvec2> positions = grid(5, 3);
+  const ViewMesh initial = ViewMesh::delaunay(positions, {}, "grid");
+  SyntheticErrors errors(positions);
+  EdgeCollapseDecimator decimator(initial, errors, DecimationOptions{0.0, 3, false});
+  while (decimator.step()) {
+  }
+  CHECK(decimator.stopReason() == StopReason::NoValidCollapse);
+  const ViewMesh final = decimator.mesh();
+  const std::set<int> kept(final.vertices().begin(), final.vertices().end());
+  // Corners: (0,0) = 0, (0,2) = 2, (4,0) = 12, (4,2) = 14.
+  CHECK(kept == std::set<int>{0, 2, 12, 14});
+  CHECK(final.triangleCount() == 2);
+  CHECK(signedArea(final) == doctest::Approx(8.0));
+
+  // Boundary vertex (2,0) = 6 lies between (1,0) and (3,0): it may slide
+  // along the boundary onto (3,0) = 9, but never inward onto (2,1) = 7.
+  EdgeCollapseDecimator fresh(initial, errors, DecimationOptions{0.0, 3, false});
+  CHECK(fresh.isValidCollapse(6, 9, 9));
+  CHECK_FALSE(fresh.isValidCollapse(6, 7, 7));
+  CHECK(fresh.isValidCollapse(6, 7, 6));
+  // A corner never goes: (0,0) = 0 onto (1,0) = 3 is refused, the reverse is fine.
+  CHECK_FALSE(fresh.isValidCollapse(0, 3, 3));
+  CHECK(fresh.isValidCollapse(0, 3, 0));
+}
+
+TEST_CASE("replaying the log to any prefix gives a valid mesh, forward and backward") {
+  const std::vector<glm::dvec2> positions = grid(6, 5);
+  const ViewMesh initial = ViewMesh::delaunay(positions, {}, "grid");
+  SyntheticErrors errors(positions);
+  EdgeCollapseDecimator decimator(initial, errors, DecimationOptions{0.0, 6, false});
+  decimator.run();
+  CHECK(decimator.stopReason() == StopReason::TargetReached);
+  CHECK(decimator.vertexCount() == 6);
+  const std::vector<Collapse>& log = decimator.log();
+  REQUIRE(log.size() == 24);
+  for (size_t steps = 0; steps <= log.size(); ++steps) {
+    const ViewMesh prefix(positions, replayForward(initial.triangles(), log, steps));
+    checkValidMesh(prefix);
+    CHECK(prefix.vertexCount() == initial.vertexCount() - int(steps));
+    CHECK(signedArea(prefix) == doctest::Approx(20.0));
+  }
+  CHECK(replayForward(initial.triangles(), log, log.size()) == decimator.mesh().triangles());
+  CHECK(replayBackward(decimator.mesh().triangles(), log, log.size()) == initial.triangles());
+}
+
+TEST_CASE("stale heap entries are skipped: each collapse is the cheapest a fresh decimator finds") {
+  // After every collapse, a decimator built from scratch on the current
+  // mesh costs every edge anew; the incremental one, which re-costs only
+  // the affected edges and skips stale heap entries, must agree.
+  const std::vector<glm::dvec2> positions = grid(6, 5);
+  const ViewMesh initial = ViewMesh::delaunay(positions, {}, "grid");
+  SyntheticErrors errors(positions);
+  EdgeCollapseDecimator incremental(initial, errors, DecimationOptions{0.0, 5, false});
+  int steps = 0;
+  while (true) {
+    EdgeCollapseDecimator fresh(incremental.mesh(), errors, DecimationOptions{0.0, 5, false});
+    const std::optional<Collapse> expected = fresh.peekNextCollapse();
+    const std::optional<Collapse> next = incremental.peekNextCollapse();
+    REQUIRE(expected.has_value() == next.has_value());
+    if (!next || incremental.vertexCount() <= 5) break;
+    CHECK(next->cost == expected->cost);
+    CHECK(next->first == expected->first);
+    CHECK(next->second == expected->second);
+    CHECK(next->placement == expected->placement);
+    CHECK(next->added == expected->added);
+    REQUIRE(incremental.step());
+    ++steps;
+  }
+  CHECK(steps == 25);
+  CHECK(incremental.statistics().staleEntriesSkipped > 0);
+}
+
+TEST_CASE("the triangle-error cache: every distinct triangle is computed once") {
+  const std::vector<glm::dvec2> positions = grid(6, 5);
+  const ViewMesh initial = ViewMesh::delaunay(positions, {}, "grid");
+  SyntheticErrors errors(positions);
+  EdgeCollapseDecimator decimator(initial, errors, DecimationOptions{0.0, 5, false});
+  decimator.run();
+  const DecimationStatistics& statistics = decimator.statistics();
+  CHECK(uint64_t(errors.evaluations) == statistics.errorsComputed);
+  CHECK(statistics.cacheHits > statistics.errorsComputed);
+}
+
+TEST_CASE("point location walks to the containing triangle, and outside to the nearest") {
+  const std::vector<glm::dvec2> positions = grid(6, 5);
+  const ViewMesh mesh = ViewMesh::delaunay(positions, {}, "grid");
+  for (double x = 0.05; x < 5.0; x += 0.37) {
+    for (double y = 0.05; y < 4.0; y += 0.41) {
+      for (int hint : {-1, 0, mesh.triangleCount() - 1}) {
+        const int t = mesh.locate({x, y}, hint);
+        REQUIRE(t >= 0);
+        CHECK(mesh.contains(t, {x, y}));
+      }
+    }
+  }
+  const int outside = mesh.locate({7.0, 2.0});
+  CHECK(mesh.distanceToTriangle(outside, {7.0, 2.0}) == doctest::Approx(2.0));
+}
+
+TEST_CASE("collinear and too few samples are refused with a clear error") {
+  const std::vector<glm::dvec2> line = {{0, 0}, {1, 1}, {2, 2}, {3, 3}};
+  CHECK_THROWS_WITH_AS(ViewMesh::delaunay(line, {}, "manifest.json"),
+                       doctest::Contains("manifest.json: the sample positions are collinear"), InputError);
+  const std::vector<glm::dvec2> two = {{0, 0}, {1, 0}};
+  CHECK_THROWS_WITH_AS(ViewMesh::delaunay(two, {}, "manifest.json"), doctest::Contains("at least 3 samples"), InputError);
+}
+
+}  // namespace triwalk
+
+#include "core/dataset.h"
+#include "core/selection.h"
+#include "core/triangle_error.h"
+#include "tests/analytic_scene.h"
+#include "tests/test_support.h"
+
+#include <tbb/global_control.h>
+
+namespace triwalk {
+
+TEST_CASE("decimation of a captured data set gives the same selection with 1 and 2 threads") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory.path(), 5, 3, 64, 2);
+  const Dataset dataset = Dataset::open(directory.path());
+  const ViewMesh initial = ViewMesh::delaunay(samplePositions(dataset), {}, "test");
+  TriangleErrorSettings settings;
+  settings.width = 64;
+  auto decimate = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+    DatasetTriangleErrors errors(dataset, settings, true);
+    EdgeCollapseDecimator decimator(initial, errors, DecimationOptions{0.0, 5, false});
+    decimator.run();
+    return decimator.log();
+  };
+  const std::vector<Collapse> one = decimate(1), two = decimate(2);
+  REQUIRE(one.size() == 10);
+  REQUIRE(two.size() == one.size());
+  for (size_t i = 0; i < one.size(); ++i) {
+    CHECK(one[i].placement == two[i].placement);
+    CHECK(one[i].cost == two[i].cost);
+    CHECK(one[i].added == two[i].added);
+  }
+}
+
+TEST_CASE("selection.json round trip, and bad selections name the file and the problem") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 4, 3, 32, 1);
+  const Dataset dataset = Dataset::open(directory / "data");
+  const std::vector<glm::dvec2> positions = samplePositions(dataset);
+  const ViewMesh initial = ViewMesh::delaunay(positions, {}, "test");
+  SyntheticErrors errors(positions);
+  EdgeCollapseDecimator decimator(initial, errors, DecimationOptions{0.0, 5, false});
+  decimator.run();
+  Selection selection;
+  selection.method = "edge_collapse";
+  selection.samples = decimator.mesh().vertices();
+  selection.triangles = decimator.mesh().triangles();
+  selection.initialTriangles = initial.triangles();
+  selection.collapses = decimator.log();
+  selection.stopReason = stopReasonName(decimator.stopReason());
+  const std::filesystem::path file = directory / "selection.json";
+  writeSelection(file, selection, dataset);
+  const Selection loaded = readSelection(file, dataset);
+  CHECK(loaded.samples == selection.samples);
+  CHECK(loaded.triangles == selection.triangles);
+  CHECK(loaded.initialTriangles == selection.initialTriangles);
+  REQUIRE(loaded.collapses.size() == selection.collapses.size());
+  CHECK(loaded.collapses.back().added == selection.collapses.back().added);
+  CHECK(loaded.collapses.back().cost == selection.collapses.back().cost);
+
+  auto edit = [&](const std::function<void(nlohmann::json&)>& change) {
+    nlohmann::json document = nlohmann::json::parse(readTextFile(file));
+    change(document);
+    writeTextFileAtomically(directory / "bad.json", document.dump());
+    return directory / "bad.json";
+  };
+  const std::string bad = (directory / "bad.json").string();
+  testing::requireInputError([&] { readSelection(edit([](nlohmann::json& d) { d["samples"][0] = 999; }), dataset); }, bad,
+                             "sample id 999 is not in");
+  testing::requireInputError(
+      [&] {
+        readSelection(edit([](nlohmann::json& d) { std::swap(d["triangles"][0][1], d["triangles"][0][2]); }), dataset);
+      },
+      bad, "not counter-clockwise");
+  testing::requireInputError(
+      [&] { readSelection(edit([](nlohmann::json& d) { d["collapses"].erase(d["collapses"].begin()); }), dataset); }, bad,
+      "removes a triangle the mesh does not have");
+  testing::requireInputError([&] { readSelection(edit([](nlohmann::json& d) { d["version"] = 2; }), dataset); }, bad,
+                             "unknown selection version 2");
+  std::ofstream(directory / "broken.json") << "{\"format\": ";
+  testing::requireInputError([&] { readSelection(directory / "broken.json", dataset); }, "broken.json", "malformed JSON");
+}
+
+}  // namespace triwalk

@@ -4,6 +4,7 @@
 #include "app/bench_groups.h"
 #include "app/commands.h"
 #include "render/gl_context.h"
+#include "render/scene_description.h"
 
 #include <cstdio>
 #include <set>
@@ -16,15 +17,18 @@ void registerBenchCommand(CLI::App& app) {
     std::string gl = "auto";
     int captureViews = 20;
     int decimationWidth = 256;
+    std::string dataset;
   };
   auto arguments = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand("bench", "Measure throughput and print a table (machine, sizes, figures)");
-  command->add_option("--only", arguments->only, "Run only these groups: capture, warp")->delimiter(',');
+  command->add_option("--only", arguments->only, "Run only these groups: capture, warp, decimate")->delimiter(',');
   command->add_option("--gl", arguments->gl, "Headless OpenGL: auto, egl or osmesa")->capture_default_str();
   command->add_option("--capture-views", arguments->captureViews, "Panoramas rendered for the capture figure")
       ->capture_default_str()->check(CLI::PositiveNumber);
   command->add_option("--decimation-width", arguments->decimationWidth, "Panorama width decimation works at")
       ->capture_default_str()->check(CLI::IsMember({64, 128, 256, 512, 1024}));
+  command->add_option("--dataset", arguments->dataset,
+                      "Data set for the decimation figures (default: capture the default one first)");
   command->callback([arguments] {
     const std::set<std::string> only(arguments->only.begin(), arguments->only.end());
     auto selected = [&](const std::string& group) { return only.empty() || only.count(group) > 0; };
@@ -32,6 +36,10 @@ void registerBenchCommand(CLI::App& app) {
     std::string glDescription;
     auto context = createHeadlessContext(parseHeadlessBackend(arguments->gl));
     glDescription = context->description();
+    // Decimation first, so that the process's peak memory is its own.
+    if (selected("decimate")) {
+      benchDecimate(table, loadSceneDescription(builtinScenePath()), arguments->dataset, arguments->decimationWidth);
+    }
     if (selected("capture")) {
       const BenchViews views = captureBenchViews();
       benchCapture(table, views.scene, 1024, arguments->captureViews);

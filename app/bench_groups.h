@@ -7,6 +7,7 @@
 #include "render/scene.h"
 
 #include <chrono>
+#include <string>
 #include <vector>
 
 namespace triwalk {
@@ -24,6 +25,8 @@ BenchViews captureBenchViews();
 
 void benchCapture(BenchTable& table, const Scene& scene, int width, int views);
 void benchWarp(BenchTable& table, const BenchViews& views, int decimationWidth);
+// datasetDirectory empty: captures the default data set first.
+void benchDecimate(BenchTable& table, const Scene& scene, const std::string& datasetDirectory, int errorWidth);
 
 using BenchClock = std::chrono::steady_clock;
 inline double secondsSince(BenchClock::time_point start) {

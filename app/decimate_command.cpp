@@ -8,6 +8,7 @@
 #include "core/progress.h"
 #include "core/selection.h"
 
+#include <chrono>
 #include <cstdio>
 
 namespace triwalk {
@@ -18,6 +19,7 @@ void registerDecimateCommand(CLI::App& app) {
     double maxError = DecimationOptions{}.maxError;
     int target = 0;
     bool oneRing = false;
+    bool unweightedCost = false;
     bool quiet = false;
     ErrorArguments errors;
   };
@@ -32,6 +34,8 @@ void registerDecimateCommand(CLI::App& app) {
       ->capture_default_str()->check(CLI::NonNegativeNumber);
   command->add_flag("--one-ring", arguments->oneRing,
                     "Also try every free sample inside the two one-rings as the placement");
+  command->add_flag("--unweighted-cost", arguments->unweightedCost,
+                    "Edge cost as the paper's plain mean of the updated triangles' errors (default: area-weighted)");
   command->add_flag("--quiet", arguments->quiet, "No progress output");
   addErrorOptions(*command, arguments->errors);
 
@@ -54,9 +58,12 @@ void registerDecimateCommand(CLI::App& app) {
     options.maxError = a.maxError;
     options.targetSamples = a.target;
     options.oneRingCandidates = a.oneRing;
+    options.areaWeightedCost = !a.unweightedCost;
+    const auto start = std::chrono::steady_clock::now();
     ProgressReporter costing("cost edges", 0, a.quiet);
     EdgeCollapseDecimator decimator(initial, errors, options);
     costing.finish();
+    const double costingSeconds = costing.elapsedSeconds();
     const size_t expected = a.target > 0 ? size_t(initial.vertexCount() - a.target) : 0;
     ProgressReporter progress("collapse", expected, a.quiet);
     const StopReason reason = decimator.run(&progress);
@@ -75,6 +82,7 @@ void registerDecimateCommand(CLI::App& app) {
     selection.settings = {{"max_error", a.maxError},
                           {"target", a.target},
                           {"one_ring", a.oneRing},
+                          {"area_weighted_cost", !a.unweightedCost},
                           {"error_width", settings.width},
                           {"quality", describeErrorSettings(settings)}};
     writeSelection(a.out, selection, dataset);
@@ -83,9 +91,13 @@ void registerDecimateCommand(CLI::App& app) {
     std::printf("kept %d of %d samples, %d triangles; stopped: %s", final.vertexCount(), initial.vertexCount(),
                 final.triangleCount(), stopReasonName(reason));
     if (std::isfinite(selection.nextCost)) std::printf(" (next cost %.3f)", selection.nextCost);
-    std::printf("\n%zu collapses in %.1f s; triangle errors computed %llu, cache hits %llu, stale heap entries %llu\n",
-                decimator.log().size(), costing.elapsedSeconds(), (unsigned long long)statistics.errorsComputed,
-                (unsigned long long)statistics.cacheHits, (unsigned long long)statistics.staleEntriesSkipped);
+    std::printf("\n%zu collapses in %.1f s (edge costing %.1f s); triangle errors computed %llu, served from the cache "
+                "%llu; warped layers computed %llu, reused %llu; stale heap entries skipped %llu\n",
+                decimator.log().size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                costingSeconds,
+                (unsigned long long)statistics.errorsComputed, (unsigned long long)statistics.cacheHits,
+                (unsigned long long)errors.layerCache().misses(), (unsigned long long)errors.layerCache().hits(),
+                (unsigned long long)statistics.staleEntriesSkipped);
     std::printf("wrote %s\n", a.out.c_str());
   });
 }

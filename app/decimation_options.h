@@ -11,7 +11,7 @@ namespace triwalk {
 
 struct ErrorArguments {
   int width = 256;
-  std::string destinations = "quadrature";
+  std::string destinations = "centroid";
   QualityArguments quality;
 };
 

@@ -99,13 +99,17 @@ void registerEvalCommand(CLI::App& app) {
       std::printf("| %s | %d | %d | %.4f | %.4f | %.4f | %.4f |\n", label(e.method), e.samples, e.triangles, e.meanError,
                   e.stdError, e.probeMeanError, e.probeStdError);
     }
-    const MethodEvaluation& uniform = evaluations[1];
     const MethodEvaluation& collapse = evaluations[2];
-    const MethodEvaluation& medoids = evaluations[3];
-    std::printf("\nprobe mean error: edge collapse %.4f vs uniform %.4f (%+.1f%%) vs k-medoids %.4f (%+.1f%%)\n",
-                collapse.probeMeanError, uniform.probeMeanError,
-                100.0 * (collapse.probeMeanError - uniform.probeMeanError) / uniform.probeMeanError, medoids.probeMeanError,
-                100.0 * (collapse.probeMeanError - medoids.probeMeanError) / medoids.probeMeanError);
+    std::printf("\nprobe mean error of edge collapse (%.4f) against the baselines, and the probes where it is lower:\n",
+                collapse.probeMeanError);
+    for (size_t row : {size_t(1), size_t(3), size_t(4)}) {
+      const MethodEvaluation& baseline = evaluations[row];
+      int lower = 0;
+      for (size_t p = 0; p < collapse.probeErrors.size(); ++p) lower += collapse.probeErrors[p] < baseline.probeErrors[p];
+      std::printf("  %-12s %.4f  edge collapse %+.1f%%, lower at %d of %zu probes\n", label(baseline.method),
+                  baseline.probeMeanError, 100.0 * (collapse.probeMeanError - baseline.probeMeanError) / baseline.probeMeanError,
+                  lower, collapse.probeErrors.size());
+    }
 
     if (!a.json.empty()) {
       nlohmann::json document = {{"dataset", a.dataset}, {"settings", describeErrorSettings(settings)}, {"rows", nlohmann::json::array()}};

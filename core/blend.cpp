@@ -18,42 +18,47 @@ std::vector<float> blendWeights(glm::vec3 destination, std::span<const glm::vec3
   return weights;
 }
 
-BlendedView blendLayers(std::span<const WarpLayer> layers, std::span<const float> weights, const BlendOptions& options) {
+BlendedPixel blendPixel(std::span<const WarpLayer* const> layers, std::span<const float> weights, size_t pixel,
+                        const BlendOptions& options) {
+  BlendedPixel result;
+  float front = std::numeric_limits<float>::infinity();
+  for (const WarpLayer* layer : layers) {
+    if (!layer->covered[pixel]) continue;
+    result.hole = false;
+    front = std::min(front, layer->distance.pixels[pixel]);
+  }
+  if (result.hole) return result;
+  glm::vec3 sum(0.0f);
+  float weightSum = 0.0f;
+  for (size_t k = 0; k < layers.size(); ++k) {
+    const WarpLayer& layer = *layers[k];
+    if (!layer.covered[pixel]) continue;
+    const float d = layer.distance.pixels[pixel];
+    const bool inInterval = std::isinf(front) ? std::isinf(d) : std::abs(d - front) < options.epsilon * front;
+    if (!inInterval) continue;
+    sum += weights[k] * layer.color.pixels[pixel];
+    weightSum += weights[k];
+    result.contributors |= uint8_t(1u << k);
+  }
+  result.color = sum / weightSum;
+  result.distance = front;
+  return result;
+}
+
+BlendedView blendLayers(std::span<const WarpLayer* const> layers, std::span<const float> weights, const BlendOptions& options) {
   TRIWALK_CHECK(!layers.empty() && layers.size() == weights.size() && layers.size() <= 8, "one weight per layer, at most 8");
-  const int width = layers[0].color.width, height = layers[0].color.height;
+  const int width = layers[0]->color.width, height = layers[0]->color.height;
   const size_t pixels = size_t(width) * size_t(height);
-  constexpr float kInfinity = std::numeric_limits<float>::infinity();
-  BlendedView view{ColorImage(width, height), ScalarImage(width, height, kInfinity), std::vector<uint8_t>(pixels, 0),
-                   std::vector<uint8_t>(pixels, 0)};
+  BlendedView view{ColorImage(width, height), ScalarImage(width, height, std::numeric_limits<float>::infinity()),
+                   std::vector<uint8_t>(pixels, 0), std::vector<uint8_t>(pixels, 0)};
   tbb::parallel_for(tbb::blocked_range<size_t>(0, pixels, 8192), [&](const tbb::blocked_range<size_t>& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) {
-      float front = kInfinity;
-      bool covered = false;
-      for (const WarpLayer& layer : layers) {
-        if (!layer.covered[i]) continue;
-        covered = true;
-        front = std::min(front, layer.distance.pixels[i]);
-      }
-      if (!covered) {
-        view.hole[i] = 1;
-        continue;
-      }
-      glm::vec3 sum(0.0f);
-      float weightSum = 0.0f;
-      uint8_t contributors = 0;
-      for (size_t k = 0; k < layers.size(); ++k) {
-        const WarpLayer& layer = layers[k];
-        if (!layer.covered[i]) continue;
-        const float d = layer.distance.pixels[i];
-        const bool inInterval = std::isinf(front) ? std::isinf(d) : std::abs(d - front) < options.epsilon * front;
-        if (!inInterval) continue;
-        sum += weights[k] * layer.color.pixels[i];
-        weightSum += weights[k];
-        contributors |= uint8_t(1u << k);
-      }
-      view.color.pixels[i] = sum / weightSum;
-      view.distance.pixels[i] = front;
-      view.contributors[i] = contributors;
+      const BlendedPixel pixel = blendPixel(layers, weights, i, options);
+      view.hole[i] = pixel.hole;
+      if (pixel.hole) continue;
+      view.color.pixels[i] = pixel.color;
+      view.distance.pixels[i] = pixel.distance;
+      view.contributors[i] = pixel.contributors;
     }
   });
   return view;

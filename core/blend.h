@@ -23,9 +23,19 @@ struct BlendedView {
   std::vector<uint8_t> contributors; // bit k set where layer k was blended
 };
 
+// One pixel of the blend; hole when no layer covers it.
+struct BlendedPixel {
+  glm::vec3 color{0.0f};  // linear
+  float distance = 0.0f;
+  uint8_t contributors = 0;
+  bool hole = true;
+};
+BlendedPixel blendPixel(std::span<const WarpLayer* const> layers, std::span<const float> weights, size_t pixel,
+                        const BlendOptions& options);
+
 // w_k for each source position, seen from the destination.
 std::vector<float> blendWeights(glm::vec3 destination, std::span<const glm::vec3> sources, const BlendOptions& options);
 
-BlendedView blendLayers(std::span<const WarpLayer> layers, std::span<const float> weights, const BlendOptions& options);
+BlendedView blendLayers(std::span<const WarpLayer* const> layers, std::span<const float> weights, const BlendOptions& options);
 
 }  // namespace triwalk

@@ -64,6 +64,7 @@ struct DecimationOptions {
   double maxError = 1.85;        // stop before a collapse costing more; <= 0: no threshold
   int targetSamples = 0;         // stop at this many samples; 0: no target
   bool oneRingCandidates = false;
+  bool areaWeightedCost = true;  // false: the paper's plain mean over the updated triangles
 };
 
 struct DecimationStatistics {

@@ -76,7 +76,7 @@ void ProgressReporter::advance(size_t count) {
   // A terminal gets a live line; a log gets a line every few seconds.
   const auto interval = interactive_ ? std::chrono::milliseconds(200) : std::chrono::milliseconds(5000);
   std::unique_lock lock(mutex_, std::try_to_lock);
-  if (lock.owns_lock() && !finished_ && now - lastPrint_ >= interval && done_ < total_) {
+  if (lock.owns_lock() && !finished_ && now - lastPrint_ >= interval && (total_ == 0 || done_ < total_)) {
     lastPrint_ = now;
     print(false);
   }

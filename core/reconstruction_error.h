@@ -33,6 +33,23 @@ struct ReconstructionError {
   double total = 0.0;       // E
 };
 
+// The error of a W x H image computed pixel by pixel: rows may be filled
+// in parallel (each row by one thread); the totals are summed in row
+// order, so the result does not depend on the thread count.
+class ErrorAccumulator {
+public:
+  ErrorAccumulator(int width, int height, const ErrorOptions& options);
+  // A pixel in display colors; returns its RMS channel difference (1 for holes).
+  float add(int y, glm::vec3 reconstruction, bool hole, glm::vec3 truth);
+  ReconstructionError result() const;
+
+private:
+  int width_;
+  ErrorOptions options_;
+  double badThreshold_;
+  std::vector<double> rowSquared_, rowBad_, rowWeight_;
+};
+
 // Display colors of a linear image.
 ColorImage toDisplayColors(const ColorImage& linear);
 

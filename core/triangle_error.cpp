@@ -1,5 +1,6 @@
 #include "core/triangle_error.h"
 
+#include "core/color.h"
 #include "core/errors.h"
 #include "core/progress.h"
 
@@ -11,7 +12,7 @@
 namespace triwalk {
 
 DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const TriangleErrorSettings& settings, bool quiet)
-    : dataset_(dataset), settings_(settings) {
+    : dataset_(dataset), settings_(settings), layerCache_(settings.layerCacheBytes) {
   dataset.downsamplingFactor(settings.width, "--error-width");
   const int samples = dataset.sampleCount(), probes = dataset.probeCount();
   sources_.resize(size_t(samples));
@@ -88,13 +89,38 @@ ReconstructionError DatasetTriangleErrors::errorAt(std::span<const int> referenc
                              perPixel);
 }
 
+double DatasetTriangleErrors::sampleError(const Triangle& triangle, int destination) {
+  const glm::vec3 position = dataset_.sample(destination).position;
+  const DestinationCamera camera = DestinationCamera::panorama(position, settings_.width, settings_.width / 2);
+  std::shared_ptr<const WarpLayer> layers[3];
+  const WarpLayer* pointers[3];
+  glm::vec3 sourcePositions[3];
+  for (int k = 0; k < 3; ++k) {
+    const WarpSource& source = *sources_[size_t(triangle[size_t(k)])];
+    layers[k] = layerCache_.get(triangle[size_t(k)], destination,
+                                [&] { return warpToCamera(source, camera, settings_.synthesis.warp.method); });
+    pointers[k] = layers[k].get();
+    sourcePositions[k] = source.position();
+  }
+  const std::vector<float> weights = blendWeights(position, sourcePositions, settings_.synthesis.blend);
+  // Blend and compare pixel by pixel, without building the blended image.
+  const ColorImage& truth = sampleDisplay_[size_t(destination)];
+  ErrorAccumulator accumulator(truth.width, truth.height, settings_.error);
+  tbb::parallel_for(0, truth.height, [&](int y) {
+    for (int x = 0; x < truth.width; ++x) {
+      const size_t i = size_t(y) * size_t(truth.width) + size_t(x);
+      const BlendedPixel pixel = blendPixel(pointers, weights, i, settings_.synthesis.blend);
+      accumulator.add(y, displayColorFast(pixel.color), pixel.hole, truth.pixels[i]);
+    }
+  });
+  return accumulator.result().total;
+}
+
 void DatasetTriangleErrors::computeErrors(std::span<const Triangle> triangles, std::span<double> errors) {
   tbb::parallel_for(size_t(0), triangles.size(), [&](size_t i) {
     const Triangle& triangle = triangles[i];
     double error = 0.0;
-    for (const auto& [destination, weight] : destinationsOf(triangle)) {
-      error += weight * errorAt(triangle, dataset_.sample(destination).position, sampleDisplay_[size_t(destination)]).total;
-    }
+    for (const auto& [destination, weight] : destinationsOf(triangle)) error += weight * sampleError(triangle, destination);
     errors[i] = error;
     ++evaluations_;
   });

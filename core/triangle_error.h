@@ -13,6 +13,7 @@
 #include "core/planar_geometry.h"
 #include "core/reconstruction_error.h"
 #include "core/view_synthesis.h"
+#include "core/warp_layer_cache.h"
 
 #include <atomic>
 #include <memory>
@@ -37,7 +38,8 @@ TriangleDestinations parseTriangleDestinations(const std::string& name);
 
 struct TriangleErrorSettings {
   int width = 256;  // panorama width the errors are computed at
-  TriangleDestinations destinations = TriangleDestinations::Quadrature;
+  size_t layerCacheBytes = size_t(1) << 30;  // warped layers kept for reuse
+  TriangleDestinations destinations = TriangleDestinations::Centroid;
   SynthesisOptions synthesis;
   ErrorOptions error;
 };
@@ -67,8 +69,12 @@ public:
   const ColorImage& probeDisplay(int probe) const { return probeDisplay_[size_t(probe)]; }
   const WarpSource& source(int sample) const { return *sources_[size_t(sample)]; }
   uint64_t evaluations() const { return evaluations_; }
+  const WarpLayerCache& layerCache() const { return layerCache_; }
 
 private:
+  // E of a triangle reconstructing a destination sample, from cached layers.
+  double sampleError(const Triangle& triangle, int destination);
+
   const Dataset& dataset_;
   TriangleErrorSettings settings_;
   std::vector<std::unique_ptr<WarpSource>> sources_;
@@ -76,6 +82,7 @@ private:
   std::vector<ColorImage> probeDisplay_;
   std::vector<glm::dvec2> positions_;
   std::atomic<uint64_t> evaluations_{0};
+  WarpLayerCache layerCache_;
 };
 
 }  // namespace triwalk

@@ -11,7 +11,9 @@ SynthesizedView synthesizeView(std::span<const WarpSource* const> sources, const
     positions.push_back(source->position());
   }
   const std::vector<float> weights = blendWeights(destination.position, positions, options.blend);
-  view.blended = blendLayers(view.layers, weights, options.blend);
+  std::vector<const WarpLayer*> layers;
+  for (const WarpLayer& layer : view.layers) layers.push_back(&layer);
+  view.blended = blendLayers(layers, weights, options.blend);
   return view;
 }
 

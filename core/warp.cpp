@@ -282,8 +282,8 @@ struct PixelRange {
   int x0, x1, y0, y1;
 };
 
-PixelRange sphericalRange(const ProjectedVertex* v[3], const SphericalTriangle& triangle, const DirectionTable& directions,
-                          int width, int height) {
+PixelRange sphericalRange(const ProjectedVertex* v[3], bool atInfinity, const DirectionTable& directions, int width,
+                          int height) {
   double xs[3], minY = 1e30, maxY = -1e30;
   for (int i = 0; i < 3; ++i) {
     xs[i] = v[i]->screen.x;
@@ -330,6 +330,7 @@ PixelRange sphericalRange(const ProjectedVertex* v[3], const SphericalTriangle& 
   // Only a triangle whose vertices spread over more than half the
   // longitudes can contain a pole.
   if (maxX - minX > 0.5 * width) {
+    const SphericalTriangle triangle(v, atInfinity);
     Coverage ignored;
     const bool north = triangle.covers({0.0, 0.0, 1.0}, ignored);
     const bool south = triangle.covers({0.0, 0.0, -1.0}, ignored);
@@ -470,9 +471,12 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
         const uint32_t payload = t << 2;
         Coverage coverage;
         if (equirect) {
+          // Most triangles are about a pixel large: those whose range holds
+          // no pixel centre are dropped before the exact test is set up.
+          const PixelRange range = sphericalRange(v, source.atInfinity(indices[0]), *directions, width, height);
+          if (range.x0 > range.x1 || range.y0 > range.y1) continue;
           const SphericalTriangle triangle(v, source.atInfinity(indices[0]));
           if (triangle.degenerate()) continue;
-          const PixelRange range = sphericalRange(v, triangle, *directions, width, height);
           for (int y = range.y0; y <= range.y1; ++y) {
             for (int column = range.x0; column <= range.x1; ++column) {
               const int x = (column % width + width) % width;

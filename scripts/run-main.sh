@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job, end to end on a fresh Debian bookworm machine (as root):
-# install what is missing, build, capture the built-in scene, then print a
-# summary. Outputs go to $TRIWALK_OUT (default: out/builtin).
+# install what is missing, build, capture the built-in scene, decimate it
+# with the paper's threshold and print the Table 1 report. Outputs go to
+# $TRIWALK_OUT (default: out/builtin).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -16,8 +17,15 @@ mkdir -p "$out"
 if [[ -f "$out/dataset/manifest.json" && -z "${TRIWALK_RECAPTURE:-}" ]]; then
   echo "== capture: reusing $out/dataset (set TRIWALK_RECAPTURE=1 to capture again)"
 else
-  echo "== capture: built-in scene, 30 paths x 15 samples + 20 probes at 1024x512"
-  "$triwalk" capture --scene builtin --out "$out/dataset" --probes 20
+  echo "== capture: built-in scene, 30 paths x 15 samples + 200 probes at 1024x512"
+  "$triwalk" capture --scene builtin --out "$out/dataset" --probes 200
 fi
-"$triwalk" export-png --dataset "$out/dataset" --views 0,224,p0 --out "$out/png"
-echo "== done: data set in $out/dataset, panoramas as PNG in $out/png"
+"$triwalk" export-png --dataset "$out/dataset" --views 0,224,p0 --out "$out/png" >/dev/null
+
+echo "== decimate: edge collapse to the paper's error threshold 1.85"
+"$triwalk" decimate --dataset "$out/dataset" --out "$out/selection.json" --max-error 1.85
+
+echo "== eval: Table 1"
+"$triwalk" eval --dataset "$out/dataset" --selection "$out/selection.json" --json "$out/table1.json" | tee "$out/report.txt"
+
+echo "== done: data set $out/dataset, selection $out/selection.json, report $out/report.txt"

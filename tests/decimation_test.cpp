@@ -191,6 +191,36 @@ TEST_CASE("stale heap entries are skipped: each collapse is the cheapest a fresh
   CHECK(incremental.statistics().staleEntriesSkipped > 0);
 }
 
+TEST_CASE("edge cost: the area-weighted mean of the updated triangles' errors, or the paper's plain mean") {
+  const std::vector<glm::dvec2> positions = grid(4, 3);
+  const ViewMesh initial = ViewMesh::delaunay(positions, {}, "grid");
+  for (const bool weighted : {true, false}) {
+    SyntheticErrors errors(positions);
+    DecimationOptions options{0.0, 3, false};
+    options.areaWeightedCost = weighted;
+    EdgeCollapseDecimator decimator(initial, errors, options);
+    // Take a few collapses so that the updated triangles differ in area.
+    for (int i = 0; i < 4; ++i) REQUIRE(decimator.step());
+    const std::optional<Collapse> next = decimator.peekNextCollapse();
+    REQUIRE(next.has_value());
+    std::vector<double> triangleErrors(next->added.size());
+    errors.computeErrors(next->added, triangleErrors);
+    double sum = 0.0, weightSum = 0.0, plainSum = 0.0;
+    for (size_t i = 0; i < next->added.size(); ++i) {
+      plainSum += triangleErrors[i];
+      const Triangle& t = next->added[i];
+      const glm::dvec2 a = positions[size_t(t[0])], b = positions[size_t(t[1])], c = positions[size_t(t[2])];
+      const double weight = weighted ? 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) : 1.0;
+      sum += weight * triangleErrors[i];
+      weightSum += weight;
+    }
+    INFO("area weighted: " << weighted);
+    CHECK(next->cost == doctest::Approx(sum / weightSum).epsilon(1e-12));
+    // The updated triangles differ in area, so the two rules disagree here.
+    if (weighted) CHECK(std::abs(sum / weightSum - plainSum / double(next->added.size())) > 1e-3);
+  }
+}
+
 TEST_CASE("the triangle-error cache: every distinct triangle is computed once") {
   const std::vector<glm::dvec2> positions = grid(6, 5);
   const ViewMesh initial = ViewMesh::delaunay(positions, {}, "grid");

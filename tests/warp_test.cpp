@@ -256,7 +256,8 @@ TEST_CASE("blend: nearest layer wins, layers within epsilon average with inverse
   const std::vector<float> weights = blendWeights(glm::vec3(0.0f), positions, BlendOptions{});
   CHECK(weights[0] == doctest::Approx(1.0));
   CHECK(weights[1] == doctest::Approx(0.25));
-  const BlendedView view = blendLayers(layers, weights, BlendOptions{});
+  const std::vector<const WarpLayer*> pointers = {&layers[0], &layers[1], &layers[2]};
+  const BlendedView view = blendLayers(pointers, weights, BlendOptions{});
   CHECK(view.color.pixels[0].r == doctest::Approx(0.8));  // 1 / (1 + 0.25)
   CHECK(view.color.pixels[0].g == doctest::Approx(0.2));
   CHECK(view.color.pixels[0].b == doctest::Approx(0.0));
@@ -264,7 +265,7 @@ TEST_CASE("blend: nearest layer wins, layers within epsilon average with inverse
   CHECK(view.contributors[0] == 0b011);
   BlendOptions narrow;
   narrow.epsilon = 0.01f;
-  CHECK(blendLayers(layers, weights, narrow).color.pixels[0] == glm::vec3(1, 0, 0));
+  CHECK(blendLayers(pointers, weights, narrow).color.pixels[0] == glm::vec3(1, 0, 0));
 }
 
 TEST_CASE("R, B and E by hand on a 4x2 image") {

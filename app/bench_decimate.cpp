@@ -1,0 +1,63 @@
+#include "app/bench_groups.h"
+#include "core/edge_collapse_decimator.h"
+#include "core/selection.h"
+#include "render/dataset_capture.h"
+
+#include <sys/resource.h>
+
+#include <filesystem>
+
+namespace triwalk {
+
+namespace {
+
+double peakResidentGigabytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / (1024.0 * 1024.0);  // ru_maxrss is in KiB on Linux
+}
+
+}  // namespace
+
+void benchDecimate(BenchTable& table, const Scene& scene, const std::string& datasetDirectory, int errorWidth) {
+  std::filesystem::path directory = datasetDirectory;
+  const bool captured = directory.empty();
+  if (captured) {
+    directory = std::filesystem::temp_directory_path() / "triwalk-bench-dataset";
+    CaptureOptions options;  // the default capture: 30 paths x 15 samples at 1024x512
+    options.probes = 0;
+    options.quiet = true;
+    captureDataset(scene, "builtin", options, directory);
+  }
+  const Dataset dataset = Dataset::open(directory);
+  const std::string size = std::to_string(dataset.sampleCount()) + " samples " + std::to_string(dataset.manifest().width) +
+                           "x" + std::to_string(dataset.manifest().height) + ", errors at " + std::to_string(errorWidth) +
+                           "x" + std::to_string(errorWidth / 2);
+  TriangleErrorSettings settings;
+  settings.width = errorWidth;
+  const auto loadStart = BenchClock::now();
+  DatasetTriangleErrors errors(dataset, settings, true);
+  const double loadSeconds = secondsSince(loadStart);
+  const ViewMesh initial = ViewMesh::delaunay(samplePositions(dataset), {}, dataset.manifestPath().string());
+  const auto start = BenchClock::now();
+  EdgeCollapseDecimator decimator(initial, errors, DecimationOptions{});
+  const double costingSeconds = secondsSince(start);
+  decimator.run();
+  const double seconds = secondsSince(start);
+  const DecimationStatistics& statistics = decimator.statistics();
+  table.add({"decimation wall time (edge collapse to the paper's 1.85)", size,
+             formatNumber(seconds, 1) + " s",
+             "initial edge costs " + formatNumber(costingSeconds, 1) + " s, " + std::to_string(decimator.log().size()) +
+                 " collapses to " + std::to_string(decimator.vertexCount()) + " samples; loading the panoramas " +
+                 formatNumber(loadSeconds, 1) + " s more"});
+  table.add({"decimation peak memory", size, formatNumber(peakResidentGigabytes(), 2) + " GiB",
+             "process peak RSS: panoramas at the error width plus the warped-layer cache (1 GiB budget)"});
+  table.add({"decimation triangle errors computed vs served from the cache", size,
+             std::to_string(statistics.errorsComputed) + " computed, " + std::to_string(statistics.cacheHits) + " cached",
+             "warped layers computed " + std::to_string(errors.layerCache().misses()) + ", reused " +
+                 std::to_string(errors.layerCache().hits()) + "; stale heap entries skipped " +
+                 std::to_string(statistics.staleEntriesSkipped)});
+  if (captured) std::filesystem::remove_all(directory);
+}
+
+}  // namespace triwalk

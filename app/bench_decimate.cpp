@@ -51,7 +51,7 @@ void benchDecimate(BenchTable& table, const Scene& scene, const std::string& dat
                  " collapses to " + std::to_string(decimator.vertexCount()) + " samples; loading the panoramas " +
                  formatNumber(loadSeconds, 1) + " s more"});
   table.add({"decimation peak memory", size, formatNumber(peakResidentGigabytes(), 2) + " GiB",
-             "process peak RSS: panoramas at the error width plus the warped-layer cache (1 GiB budget)"});
+             "process peak RSS (the capture before it needs far less): panoramas at the error width plus the warped-layer cache (1 GiB budget)"});
   table.add({"decimation triangle errors computed vs served from the cache", size,
              std::to_string(statistics.errorsComputed) + " computed, " + std::to_string(statistics.cacheHits) + " cached",
              "warped layers computed " + std::to_string(errors.layerCache().misses()) + ", reused " +

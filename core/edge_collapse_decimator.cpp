@@ -444,10 +444,27 @@ StopReason EdgeCollapseDecimator::run(ProgressReporter* progress) {
       char status[96];
       std::snprintf(status, sizeof status, "samples %d  cost %.3f", vertexCount_, log_.back().cost);
       progress->setStatus(status);
+      progress->setTotal(log_.size() + expectedRemainingCollapses());
       progress->advance();
     }
   }
   return stopReason_;
+}
+
+// For the time left: to the target count, or, under an error threshold,
+// the collapses until the cost reaches it at the pace of the last 32.
+size_t EdgeCollapseDecimator::expectedRemainingCollapses() const {
+  const int floorCount = std::max(3, options_.targetSamples);
+  size_t remaining = size_t(std::max(0, vertexCount_ - floorCount));
+  const size_t window = 32;
+  if (options_.maxError > 0.0 && log_.size() > window) {
+    const double rise = log_.back().cost - log_[log_.size() - 1 - window].cost;
+    if (rise > 0.0) {
+      const double toThreshold = std::max(0.0, options_.maxError - log_.back().cost);
+      remaining = std::min(remaining, size_t(toThreshold / rise * double(window)) + 1);
+    }
+  }
+  return remaining;
 }
 
 // -------------------------------------------------------------- replay --

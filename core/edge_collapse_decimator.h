@@ -138,6 +138,7 @@ private:
   double meanError(const std::vector<Triangle>& triangles);
   const HeapEntry* peekValid();
   void apply(const Edge& edge, const EdgeState& state);
+  size_t expectedRemainingCollapses() const;
 
   std::vector<glm::dvec2> positions_;
   std::vector<Triangle> triangles_;

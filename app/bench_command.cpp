@@ -21,7 +21,7 @@ void registerBenchCommand(CLI::App& app) {
   };
   auto arguments = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand("bench", "Measure throughput and print a table (machine, sizes, figures)");
-  command->add_option("--only", arguments->only, "Run only these groups: capture, warp, decimate")->delimiter(',');
+  command->add_option("--only", arguments->only, "Run only these groups: capture, decimate, warp, render")->delimiter(',');
   command->add_option("--gl", arguments->gl, "Headless OpenGL: auto, egl or osmesa")->capture_default_str();
   command->add_option("--capture-views", arguments->captureViews, "Panoramas rendered for the capture figure")
       ->capture_default_str()->check(CLI::PositiveNumber);
@@ -43,7 +43,11 @@ void registerBenchCommand(CLI::App& app) {
     if (selected("decimate")) {
       benchDecimate(table, loadSceneDescription(builtinScenePath()), arguments->dataset, arguments->decimationWidth);
     }
-    if (selected("warp")) benchWarp(table, captureBenchViews(), arguments->decimationWidth);
+    if (selected("warp") || selected("render")) {
+      const BenchViews views = captureBenchViews();
+      if (selected("warp")) benchWarp(table, views, arguments->decimationWidth);
+      if (selected("render")) benchRender(table, views, 60);
+    }
     table.print(glDescription);
   });
 }

@@ -25,6 +25,7 @@ BenchViews captureBenchViews();
 
 void benchCapture(BenchTable& table, const Scene& scene, int width, int views);
 void benchWarp(BenchTable& table, const BenchViews& views, int decimationWidth);
+void benchRender(BenchTable& table, const BenchViews& views, int frames);
 // datasetDirectory empty: captures the default data set first.
 void benchDecimate(BenchTable& table, const Scene& scene, const std::string& datasetDirectory, int errorWidth);
 

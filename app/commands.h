@@ -11,5 +11,7 @@ void registerBenchCommand(CLI::App& app);
 void registerSynthCommand(CLI::App& app);
 void registerDecimateCommand(CLI::App& app);
 void registerEvalCommand(CLI::App& app);
+void registerRenderCommand(CLI::App& app);
+void registerViewCommand(CLI::App& app);
 
 }  // namespace triwalk

@@ -39,11 +39,48 @@ void writeHeatmaps(const std::filesystem::path& directory, const MethodEvaluatio
   }
 }
 
+// Probe error of edge collapse and the baselines at several sample counts:
+// the collapse log replayed to each count gives edge collapse's mesh.
+void compareAtCounts(const Dataset& dataset, const Selection& selection, const std::vector<int>& counts, unsigned seed,
+                     DatasetTriangleErrors& errors) {
+  if (selection.initialTriangles.empty()) {
+    throw InputError("--counts", "the selection has no collapse log to replay");
+  }
+  const std::vector<glm::dvec2> positions = samplePositions(dataset);
+  const int initialCount = ViewMesh(positions, selection.initialTriangles).vertexCount();
+  std::printf("\nprobe mean error by sample count (edge collapse replayed from its log)\n\n");
+  std::printf("| samples | edge collapse | uniform | k-medoids | random |\n|---|---|---|---|---|\n");
+  double sums[4] = {0, 0, 0, 0};
+  for (int count : counts) {
+    const int steps = initialCount - count;
+    if (steps < 0 || steps > int(selection.collapses.size())) {
+      throw InputError("--counts", std::to_string(count) + " samples is outside what the collapse log reaches (" +
+                                       std::to_string(initialCount - int(selection.collapses.size())) + " to " +
+                                       std::to_string(initialCount) + ")");
+    }
+    const ViewMesh meshes[4] = {
+        ViewMesh(positions, replayForward(selection.initialTriangles, selection.collapses, size_t(steps))),
+        ViewMesh::delaunay(positions, uniformSelection(dataset, count), "uniform baseline"),
+        ViewMesh::delaunay(positions, kMedoidsSelection(positions, count), "k-medoids baseline"),
+        ViewMesh::delaunay(positions, randomSelection(dataset.sampleCount(), count, seed), "random baseline")};
+    double values[4];
+    for (int m = 0; m < 4; ++m) {
+      values[m] = evaluateMesh("", meshes[m], errors).probeMeanError;
+      sums[m] += values[m];
+    }
+    std::printf("| %d | %.4f | %.4f (%d) | %.4f | %.4f |\n", count, values[0], values[1], meshes[1].vertexCount(), values[2],
+                values[3]);
+  }
+  const double n = double(counts.size());
+  std::printf("| mean | %.4f | %.4f | %.4f | %.4f |\n", sums[0] / n, sums[1] / n, sums[2] / n, sums[3] / n);
+}
+
 }  // namespace
 
 void registerEvalCommand(CLI::App& app) {
   struct Arguments {
     std::string dataset, selection, json, heatmaps;
+    std::vector<int> counts;
     unsigned seed = 1;
     bool quiet = false;
     ErrorArguments errors;
@@ -55,6 +92,10 @@ void registerEvalCommand(CLI::App& app) {
   command->add_option("--json", arguments->json, "Also write the rows as JSON");
   command->add_option("--heatmaps", arguments->heatmaps, "Directory for per-probe error heatmap PNGs");
   command->add_option("--seed", arguments->seed, "Seed of the random baseline")->capture_default_str();
+  command->add_option("--counts", arguments->counts,
+                      "Also compare probe errors at these sample counts, replaying the selection's collapse log "
+                      "(decimate with --target at or below the smallest)")
+      ->delimiter(',');
   command->add_flag("--quiet", arguments->quiet, "No progress output");
   addErrorOptions(*command, arguments->errors);
 
@@ -110,6 +151,8 @@ void registerEvalCommand(CLI::App& app) {
                   baseline.probeMeanError, 100.0 * (collapse.probeMeanError - baseline.probeMeanError) / baseline.probeMeanError,
                   lower, collapse.probeErrors.size());
     }
+
+    if (!a.counts.empty()) compareAtCounts(dataset, selection, a.counts, a.seed, errors);
 
     if (!a.json.empty()) {
       nlohmann::json document = {{"dataset", a.dataset}, {"settings", describeErrorSettings(settings)}, {"rows", nlohmann::json::array()}};

@@ -16,6 +16,10 @@ int main(int argc, char** argv) {
   triwalk::registerSynthCommand(app);
   triwalk::registerDecimateCommand(app);
   triwalk::registerEvalCommand(app);
+  triwalk::registerRenderCommand(app);
+#ifdef TRIWALK_WITH_VIEWER
+  triwalk::registerViewCommand(app);
+#endif
   triwalk::registerBenchCommand(app);
   try {
     app.parse(argc, argv);

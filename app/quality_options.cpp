@@ -4,7 +4,9 @@
 
 namespace triwalk {
 
-void addQualityOptions(CLI::App& command, QualityArguments& arguments) {
+namespace {
+
+void addStretchOptions(CLI::App& command, QualityArguments& arguments) {
   command.add_option("--stretch-test", arguments.stretchTest, "Rubber-sheet test: grazing-angle, depth-ratio or none")
       ->capture_default_str()->group("Warp");
   command.add_option("--grazing-angle", arguments.grazingAngleDegrees,
@@ -12,12 +14,27 @@ void addQualityOptions(CLI::App& command, QualityArguments& arguments) {
       ->capture_default_str()->check(CLI::Range(0.0f, 89.0f))->group("Warp");
   command.add_option("--depth-ratio", arguments.maxDepthRatio, "depth-ratio: drop triangles with farthest/nearest above this")
       ->capture_default_str()->check(CLI::Range(1.0f, 1000.0f))->group("Warp");
-  command.add_flag("--point-warp", arguments.pointWarp, "The paper's literal point warp instead of the triangle mesh")
-      ->group("Warp");
+}
+
+void addBlendOptions(CLI::App& command, QualityArguments& arguments) {
   command.add_option("--epsilon", arguments.epsilon, "Blend interval, relative to the nearest distance (Eq. 1)")
       ->capture_default_str()->check(CLI::Range(0.0f, 10.0f))->group("Blend");
   command.add_option("--min-weight-distance", arguments.minimumWeightDistance, "r_min of the weights 1/max(d, r_min), metres")
       ->capture_default_str()->check(CLI::PositiveNumber)->group("Blend");
+}
+
+}  // namespace
+
+void addRenderQualityOptions(CLI::App& command, QualityArguments& arguments) {
+  addStretchOptions(command, arguments);
+  addBlendOptions(command, arguments);
+}
+
+void addQualityOptions(CLI::App& command, QualityArguments& arguments) {
+  addStretchOptions(command, arguments);
+  command.add_flag("--point-warp", arguments.pointWarp, "The paper's literal point warp instead of the triangle mesh")
+      ->group("Warp");
+  addBlendOptions(command, arguments);
   command.add_option("--alpha", arguments.alpha, "Weight of R in E = alpha R + beta B")->capture_default_str()->group("Error");
   command.add_option("--beta", arguments.beta, "Weight of B (percent of bad pixels)")->capture_default_str()->group("Error");
   command.add_option("--delta", arguments.delta, "Bad-pixel tolerance on the 0..255 scale")

@@ -24,7 +24,10 @@ struct QualityArguments {
   std::string pixelWeighting = "solid-angle";
 };
 
+// Warp, blend and error options (synth, decimate, eval).
 void addQualityOptions(CLI::App& command, QualityArguments& arguments);
+// The stretch test and the blend only (render, view: the GPU warp).
+void addRenderQualityOptions(CLI::App& command, QualityArguments& arguments);
 
 SynthesisOptions synthesisOptions(const QualityArguments& arguments);
 ErrorOptions errorOptions(const QualityArguments& arguments);

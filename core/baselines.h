@@ -16,9 +16,9 @@
 
 namespace triwalk {
 
-// Needs each sample's path and step; the grid nearest to count samples,
-// with the most even spacing, corners included. Throws InputError if the
-// manifest lacks paths.
+// Needs each sample's path and step; a sub-grid of paths and steps near
+// count samples with even spacing (it may hold a few more or fewer),
+// corners included. Throws InputError if the manifest lacks paths.
 std::vector<int> uniformSelection(const Dataset& dataset, int count);
 
 // Deterministic: greedy farthest-point start, then Voronoi iteration

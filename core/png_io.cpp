@@ -4,10 +4,9 @@
 #include "core/color.h"
 #include "core/errors.h"
 
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#include <stb/stb_image_write.h>
-#define STB_IMAGE_IMPLEMENTATION
+// The implementations come from Debian's libstb (which Dear ImGui uses too).
 #include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
 
 #include <cmath>
 

@@ -127,3 +127,36 @@ void DatasetTriangleErrors::computeErrors(std::span<const Triangle> triangles, s
 }
 
 }  // namespace triwalk
+
+namespace triwalk {
+
+void CachingTriangleErrors::computeErrors(std::span<const Triangle> triangles, std::span<double> errors) {
+  auto sorted = [](Triangle t) {
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  std::vector<Triangle> missing;
+  std::vector<size_t> missingAt;
+  {
+    std::lock_guard lock(mutex_);
+    for (size_t i = 0; i < triangles.size(); ++i) {
+      const auto known = known_.find(sorted(triangles[i]));
+      if (known != known_.end()) {
+        errors[i] = known->second;
+      } else {
+        missing.push_back(triangles[i]);
+        missingAt.push_back(i);
+      }
+    }
+  }
+  if (missing.empty()) return;
+  std::vector<double> computed(missing.size());
+  source_.computeErrors(missing, computed);
+  std::lock_guard lock(mutex_);
+  for (size_t j = 0; j < missing.size(); ++j) {
+    errors[missingAt[j]] = computed[j];
+    known_[sorted(missing[j])] = computed[j];
+  }
+}
+
+}  // namespace triwalk

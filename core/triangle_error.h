@@ -16,6 +16,8 @@
 #include "core/warp_layer_cache.h"
 
 #include <atomic>
+#include <map>
+#include <mutex>
 #include <memory>
 #include <span>
 #include <vector>
@@ -83,6 +85,24 @@ private:
   std::vector<glm::dvec2> positions_;
   std::atomic<uint64_t> evaluations_{0};
   WarpLayerCache layerCache_;
+};
+
+}  // namespace triwalk
+
+namespace triwalk {
+
+// Remembers every triangle error another source computed, so that a new
+// decimator (the viewer rebuilds one after stepping back) starts warm.
+// Thread-safe.
+class CachingTriangleErrors final : public TriangleErrorSource {
+public:
+  explicit CachingTriangleErrors(TriangleErrorSource& source) : source_(source) {}
+  void computeErrors(std::span<const Triangle> triangles, std::span<double> errors) override;
+
+private:
+  TriangleErrorSource& source_;
+  std::mutex mutex_;
+  std::map<Triangle, double> known_;  // by sorted vertices
 };
 
 }  // namespace triwalk

@@ -1,0 +1,233 @@
+#include "app/viewer/decimation_session.h"
+
+#include "core/color.h"
+#include "core/png_io.h"
+
+#include <cmath>
+#include <limits>
+
+namespace triwalk {
+
+DecimationSession::DecimationSession(const Dataset& dataset, const TriangleErrorSettings& settings, DecimationOptions options,
+                                     const std::optional<Selection>& selection)
+    : dataset_(dataset), settings_(settings), options_(options) {
+  // Single steps go as far as the person asks; runs set their own limit.
+  options_.maxError = 0.0;
+  options_.targetSamples = 0;
+  if (selection && !selection->initialTriangles.empty()) {
+    initial_ = selection->initialTriangles;
+    log_ = selection->collapses;
+    step_ = int(log_.size());
+  } else if (selection) {
+    initial_ = selection->triangles;  // a baseline or hand-made selection: decimate on from it
+  } else {
+    initial_ = ViewMesh::delaunay(samplePositions(dataset), {}, dataset.manifestPath().string()).triangles();
+  }
+  publish("loading panoramas for the error at " + std::to_string(settings.width) + "x" + std::to_string(settings.width / 2));
+  thread_ = std::thread([this] { worker(); });
+  post([this] {
+    ensureErrors();
+    publish("ready");
+  });
+}
+
+DecimationSession::~DecimationSession() {
+  {
+    std::lock_guard lock(mutex_);
+    quit_ = true;
+    tasks_.clear();
+  }
+  stopRun_ = true;
+  wake_.notify_all();
+  thread_.join();
+}
+
+void DecimationSession::post(std::function<void()> task) {
+  {
+    std::lock_guard lock(mutex_);
+    tasks_.push_back(std::move(task));
+    snapshot_.busy = true;
+  }
+  wake_.notify_all();
+}
+
+void DecimationSession::worker() {
+  while (true) {
+    std::function<void()> task;
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [&] { return quit_ || !tasks_.empty(); });
+      if (quit_) return;
+      task = std::move(tasks_.front());
+      tasks_.pop_front();
+    }
+    try {
+      task();
+    } catch (const std::exception& error) {
+      publish(std::string("error: ") + error.what());
+    }
+    std::lock_guard lock(mutex_);
+    snapshot_.busy = !tasks_.empty();
+    ++snapshot_.version;
+  }
+}
+
+void DecimationSession::ensureErrors() {
+  if (errors_) return;
+  errors_ = std::make_unique<DatasetTriangleErrors>(dataset_, settings_, true);
+  cachedErrors_ = std::make_unique<CachingTriangleErrors>(*errors_);
+}
+
+void DecimationSession::ensureDecimator() {
+  ensureErrors();
+  if (decimator_ && decimatorStep_ == step_) return;
+  const ViewMesh mesh(samplePositions(dataset_), replayForward(initial_, log_, size_t(step_)));
+  decimator_ = std::make_unique<EdgeCollapseDecimator>(mesh, *cachedErrors_, options_);
+  decimatorStep_ = step_;
+}
+
+// One step forward: replayed from the log, or a new collapse past its end
+// (the log is cut there first if the person had stepped back).
+bool DecimationSession::forwardOne() {
+  if (step_ < int(log_.size())) {
+    ++step_;
+    return true;
+  }
+  ensureDecimator();
+  if (!decimator_->step()) return false;
+  {
+    std::lock_guard lock(mutex_);  // selection() reads the log from the UI thread
+    log_.resize(size_t(step_));
+    log_.push_back(decimator_->log().back());
+  }
+  ++step_;
+  decimatorStep_ = step_;
+  return true;
+}
+
+void DecimationSession::publish(const std::string& status) {
+  Snapshot next;
+  next.triangles = replayForward(initial_, log_, size_t(step_));
+  next.triangleErrors.assign(next.triangles.size(), std::numeric_limits<double>::quiet_NaN());
+  if (cachedErrors_) cachedErrors_->computeErrors(next.triangles, next.triangleErrors);
+  for (const Collapse& collapse : log_) next.costs.push_back(collapse.cost);
+  next.step = step_;
+  next.logSize = int(log_.size());
+  next.samples = int(ViewMesh(samplePositions(dataset_), next.triangles).vertexCount());
+  next.errorsReady = errors_ != nullptr;
+  if (decimator_ && decimatorStep_ == step_ && step_ == int(log_.size())) next.nextCost = decimator_->nextCost();
+  next.status = status;
+  std::lock_guard lock(mutex_);
+  next.version = snapshot_.version + 1;
+  next.busy = snapshot_.busy;
+  snapshot_ = std::move(next);
+}
+
+DecimationSession::Snapshot DecimationSession::snapshot() const {
+  std::lock_guard lock(mutex_);
+  return snapshot_;
+}
+
+void DecimationSession::stepForward(int count) {
+  post([this, count] {
+    int done = 0;
+    while (done < count && forwardOne()) ++done;
+    publish(done < count ? std::string("stopped: ") + stopReasonName(decimator_->stopReason()) : "stepped forward");
+  });
+}
+
+void DecimationSession::stepBack(int count) {
+  post([this, count] {
+    step_ = std::max(0, step_ - count);
+    publish("stepped back");
+  });
+}
+
+void DecimationSession::runToError(double maxError) {
+  stopRun_ = false;
+  post([this, maxError] {
+    DecimationOptions saved = options_;
+    options_.maxError = maxError;
+    options_.targetSamples = 0;
+    decimator_.reset();
+    int done = 0;
+    while (!stopRun_ && forwardOne()) {
+      if (step_ <= int(log_.size()) && log_[size_t(step_ - 1)].cost > maxError) {
+        --step_;  // a replayed collapse above the threshold is not taken
+        break;
+      }
+      if (++done % 10 == 0) publish("running to error " + std::to_string(maxError));
+    }
+    options_ = saved;
+    decimator_.reset();
+    publish(stopRun_ ? "stopped" : "reached error " + std::to_string(maxError));
+  });
+}
+
+void DecimationSession::runToSamples(int samples) {
+  stopRun_ = false;
+  post([this, samples] {
+    DecimationOptions saved = options_;
+    options_.maxError = 0.0;
+    options_.targetSamples = samples;
+    decimator_.reset();
+    int done = 0;
+    while (!stopRun_) {
+      const int current = ViewMesh(samplePositions(dataset_), replayForward(initial_, log_, size_t(step_))).vertexCount();
+      if (current <= samples || !forwardOne()) break;
+      if (++done % 10 == 0) publish("running to " + std::to_string(samples) + " samples");
+    }
+    options_ = saved;
+    decimator_.reset();
+    publish(stopRun_ ? "stopped" : "reached " + std::to_string(samples) + " samples");
+  });
+}
+
+void DecimationSession::stop() { stopRun_ = true; }
+
+void DecimationSession::inspect(const Triangle& triangle) {
+  post([this, triangle] {
+    ensureErrors();
+    Inspection inspection;
+    inspection.triangle = triangle;
+    inspection.destination = errors_->destinationsOf(triangle).front().first;
+    const glm::vec3 position = dataset_.sample(inspection.destination).position;
+    const SynthesizedView view = errors_->synthesize(triangle, position);
+    ScalarImage perPixel;
+    inspection.error = reconstructionError(toDisplayColors(view.blended.color), view.blended.hole,
+                                           errors_->sampleDisplay(inspection.destination), settings_.error, &perPixel);
+    inspection.reconstruction = toDisplayImage(view.blended.color);
+    for (size_t i = 0; i < view.blended.hole.size(); ++i) {
+      if (view.blended.hole[i]) inspection.reconstruction.pixels[i] = {255, 0, 255};
+    }
+    Rgb8Image truth(perPixel.width, perPixel.height);
+    const ColorImage& display = errors_->sampleDisplay(inspection.destination);
+    for (size_t i = 0; i < truth.pixelCount(); ++i) truth.pixels[i] = toBytes(display.pixels[i]);
+    inspection.truth = std::move(truth);
+    inspection.heatmap = heatmapImage(perPixel, 0.25f);
+    std::lock_guard lock(mutex_);
+    inspection_ = std::move(inspection);
+  });
+}
+
+std::optional<DecimationSession::Inspection> DecimationSession::inspection() const {
+  std::lock_guard lock(mutex_);
+  return inspection_;
+}
+
+Selection DecimationSession::selection() const {
+  const Snapshot current = snapshot();
+  Selection selection;
+  selection.method = "edge_collapse";
+  selection.triangles = current.triangles;
+  const ViewMesh mesh(samplePositions(dataset_), current.triangles);
+  selection.samples = mesh.vertices();
+  selection.initialTriangles = initial_;
+  std::lock_guard lock(mutex_);
+  selection.collapses.assign(log_.begin(), log_.begin() + current.step);
+  selection.stopReason = "saved from the viewer at step " + std::to_string(current.step);
+  selection.nextCost = current.nextCost;
+  return selection;
+}
+
+}  // namespace triwalk

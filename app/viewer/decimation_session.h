@@ -1,0 +1,102 @@
+#pragma once
+// The viewer's decimation: the dense triangulation, the collapse log and
+// the step the person is at. Stepping within the log replays it (instant,
+// forward and back); stepping past its end computes new collapses. All
+// work that needs panoramas (loading them at the error width, triangle
+// errors, collapses, the inspector's reconstruction) runs on one worker
+// thread, so the walkthrough never stalls; the UI reads snapshots.
+
+#include "core/dataset.h"
+#include "core/edge_collapse_decimator.h"
+#include "core/image.h"
+#include "core/selection.h"
+#include "core/triangle_error.h"
+
+#include <atomic>
+#include <condition_variable>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+namespace triwalk {
+
+class DecimationSession {
+public:
+  // selection: continue from a saved selection (its log when it has one).
+  DecimationSession(const Dataset& dataset, const TriangleErrorSettings& settings, DecimationOptions options,
+                    const std::optional<Selection>& selection);
+  ~DecimationSession();
+  DecimationSession(const DecimationSession&) = delete;
+  DecimationSession& operator=(const DecimationSession&) = delete;
+
+  struct Snapshot {
+    uint64_t version = 0;  // changes whenever anything below does
+    std::vector<Triangle> triangles;
+    std::vector<double> triangleErrors;  // aligned with triangles; NaN until known
+    std::vector<double> costs;           // cost of each logged collapse
+    int step = 0;                        // collapses applied
+    int logSize = 0;
+    int samples = 0;
+    double nextCost = -1.0;              // of the next new collapse; -1 unknown, +inf none
+    bool errorsReady = false;            // panoramas loaded at the error width
+    bool busy = false;
+    std::string status;
+  };
+  Snapshot snapshot() const;
+
+  void stepForward(int count);
+  void stepBack(int count);
+  void runToError(double maxError);
+  void runToSamples(int samples);
+  void stop();  // ends a run after the current collapse
+
+  struct Inspection {
+    Triangle triangle{};
+    int destination = -1;  // sample index
+    ReconstructionError error;
+    Rgb8Image reconstruction, truth, heatmap;
+  };
+  void inspect(const Triangle& triangle);
+  std::optional<Inspection> inspection() const;
+
+  // The selection at the current step, as decimate would write it.
+  Selection selection() const;
+  const Dataset& dataset() const { return dataset_; }
+
+private:
+  void worker();
+  void post(std::function<void()> task);
+  // Worker thread only.
+  void ensureErrors();
+  void ensureDecimator();
+  bool forwardOne();
+  void publish(const std::string& status);
+
+  const Dataset& dataset_;
+  TriangleErrorSettings settings_;
+  DecimationOptions options_;
+  std::vector<Triangle> initial_;
+
+  // Worker state.
+  std::vector<Collapse> log_;
+  int step_ = 0;
+  std::unique_ptr<DatasetTriangleErrors> errors_;
+  std::unique_ptr<CachingTriangleErrors> cachedErrors_;
+  std::unique_ptr<EdgeCollapseDecimator> decimator_;
+  int decimatorStep_ = -1;  // the step the decimator's mesh is at
+
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  std::deque<std::function<void()>> tasks_;
+  Snapshot snapshot_;
+  std::optional<Inspection> inspection_;
+  std::atomic<bool> stopRun_{false};
+  bool quit_ = false;
+  std::thread thread_;
+};
+
+}  // namespace triwalk

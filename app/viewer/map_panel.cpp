@@ -1,0 +1,116 @@
+// Top view: every sample, the current triangulation colored by triangle
+// error (with a legend), the person and where they look, the triangle they
+// stand in; a click selects a triangle for the inspector.
+
+#include "app/viewer/viewer_state.h"
+#include "core/color.h"
+
+#include <imgui.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace triwalk {
+
+namespace {
+
+constexpr float kErrorScale = 3.0f;  // E shown red
+
+ImU32 toImColor(glm::vec3 color, float alpha = 1.0f) {
+  return ImGui::ColorConvertFloat4ToU32(ImVec4(color.r, color.g, color.b, alpha));
+}
+
+}  // namespace
+
+void drawMapPanel(ViewerState& state) {
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(420, 300), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Map")) {
+    ImGui::End();
+    return;
+  }
+  const Dataset& dataset = *state.dataset;
+  glm::vec2 lower(1e30f), upper(-1e30f);
+  for (int i = 0; i < dataset.sampleCount(); ++i) {
+    lower = glm::min(lower, glm::vec2(dataset.sample(i).position));
+    upper = glm::max(upper, glm::vec2(dataset.sample(i).position));
+  }
+  const glm::vec2 margin = 0.05f * (upper - lower) + 0.2f;
+  lower -= margin;
+  upper += margin;
+
+  const ImVec2 available = ImGui::GetContentRegionAvail();
+  const ImVec2 canvasSize(std::max(available.x, 50.0f), std::max(available.y - 24.0f, 50.0f));
+  const float scale = std::min(canvasSize.x / (upper.x - lower.x), canvasSize.y / (upper.y - lower.y));
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton("map", canvasSize);
+  const bool clicked = ImGui::IsItemClicked();
+  // World x right, y up.
+  auto toScreen = [&](glm::vec2 p) {
+    return ImVec2(origin.x + (p.x - lower.x) * scale, origin.y + canvasSize.y - (p.y - lower.y) * scale);
+  };
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->AddRectFilled(origin, ImVec2(origin.x + canvasSize.x, origin.y + canvasSize.y), IM_COL32(25, 25, 30, 255));
+
+  const std::vector<Triangle>& triangles = state.mesh.triangles();
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    const ImVec2 a = toScreen(state.mesh.position(triangles[t][0])), b = toScreen(state.mesh.position(triangles[t][1])),
+                 c = toScreen(state.mesh.position(triangles[t][2]));
+    const bool known = t < state.snapshot.triangleErrors.size() && !std::isnan(state.snapshot.triangleErrors[t]) &&
+                       state.snapshot.triangles.size() == triangles.size();
+    const ImU32 fill = known ? toImColor(falseColor(float(state.snapshot.triangleErrors[t]) / kErrorScale), 0.85f)
+                             : IM_COL32(90, 90, 90, 200);
+    draw->AddTriangleFilled(a, b, c, fill);
+    draw->AddTriangle(a, b, c, IM_COL32(20, 20, 20, 255), 1.0f);
+  }
+  auto outline = [&](int t, ImU32 color, float thickness) {
+    if (t < 0 || t >= int(triangles.size())) return;
+    draw->AddTriangle(toScreen(state.mesh.position(triangles[size_t(t)][0])), toScreen(state.mesh.position(triangles[size_t(t)][1])),
+                      toScreen(state.mesh.position(triangles[size_t(t)][2])), color, thickness);
+  };
+  outline(state.selectedTriangle, IM_COL32(0, 230, 255, 255), 3.0f);
+  outline(state.currentTriangle, IM_COL32(255, 230, 0, 255), 2.5f);
+  for (int i = 0; i < dataset.sampleCount(); ++i) draw->AddCircleFilled(toScreen(glm::vec2(dataset.sample(i).position)), 1.5f, IM_COL32(150, 150, 150, 255));
+  for (int v : state.mesh.vertices()) draw->AddCircleFilled(toScreen(glm::vec2(state.mesh.position(v))), 3.5f, IM_COL32(255, 255, 255, 255));
+  for (int r : state.references) {
+    if (r >= 0) draw->AddCircle(toScreen(glm::vec2(state.mesh.position(r))), 6.0f, IM_COL32(80, 255, 80, 255), 12, 2.0f);
+  }
+  // The person and the view frustum.
+  const ImVec2 here = toScreen(glm::vec2(state.walk.position));
+  const float aspect = 16.0f / 9.0f;
+  const float halfHorizontal = std::atan(std::tan(glm::radians(state.verticalFovDegrees) * 0.5f) * aspect);
+  for (float side : {-1.0f, 1.0f}) {
+    const float angle = glm::radians(state.walk.yawDegrees) + side * halfHorizontal;
+    draw->AddLine(here, toScreen(glm::vec2(state.walk.position) + 1.2f * glm::vec2(std::cos(angle), std::sin(angle))),
+                  IM_COL32(255, 80, 80, 200), 1.5f);
+  }
+  const float yaw = glm::radians(state.walk.yawDegrees);
+  draw->AddLine(here, toScreen(glm::vec2(state.walk.position) + 0.8f * glm::vec2(std::cos(yaw), std::sin(yaw))),
+                IM_COL32(255, 60, 60, 255), 3.0f);
+  draw->AddCircleFilled(here, 5.0f, IM_COL32(255, 60, 60, 255));
+
+  if (clicked) {
+    const ImVec2 mouse = ImGui::GetMousePos();
+    const glm::dvec2 world(lower.x + (mouse.x - origin.x) / scale, lower.y + (origin.y + canvasSize.y - mouse.y) / scale);
+    const int t = state.mesh.locate(world);
+    if (t >= 0 && state.mesh.contains(t, world)) {
+      state.selectedTriangle = t;
+      state.session->inspect(triangles[size_t(t)]);
+    }
+  }
+
+  // Legend: triangle error from 0 to kErrorScale.
+  const ImVec2 legend = ImGui::GetCursorScreenPos();
+  const float legendWidth = std::min(canvasSize.x - 120.0f, 220.0f);
+  for (int i = 0; i < 32; ++i) {
+    const float x0 = legend.x + legendWidth * float(i) / 32.0f, x1 = legend.x + legendWidth * float(i + 1) / 32.0f;
+    draw->AddRectFilled(ImVec2(x0, legend.y + 4), ImVec2(x1, legend.y + 16), toImColor(falseColor(float(i) / 31.0f)));
+  }
+  char label[96];
+  std::snprintf(label, sizeof label, "triangle error E: 0 .. %.0f", kErrorScale);
+  draw->AddText(ImVec2(legend.x + legendWidth + 8, legend.y + 2), IM_COL32(230, 230, 230, 255), label);
+  ImGui::Dummy(ImVec2(canvasSize.x, 20));
+  ImGui::End();
+}
+
+}  // namespace triwalk

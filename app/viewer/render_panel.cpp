@@ -1,0 +1,52 @@
+// Render settings and statistics: the blend's epsilon and weights, the
+// stretch test, hole display, which reference made each pixel; frame rate
+// and the working set.
+
+#include "app/viewer/viewer_state.h"
+
+#include <imgui.h>
+
+namespace triwalk {
+
+void drawRenderPanel(ViewerState& state) {
+  ImGui::SetNextWindowPos(ImVec2(440, 270), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(380, 330), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Render")) {
+    ImGui::End();
+    return;
+  }
+  ImGui::Text("%.1f fps, frame %.1f ms (%.2f M triangles)", state.framesPerSecond, state.frameMilliseconds,
+              double(state.frame.trianglesDrawn) / 1e6);
+  const Dataset& dataset = *state.dataset;
+  ImGui::Text("triangle %d, references", state.currentTriangle);
+  for (int r : state.references) {
+    ImGui::SameLine();
+    ImGui::Text("%d", r >= 0 ? dataset.sample(r).id : -1);
+  }
+  if (state.referencesAvailable < 3) {
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(1, 0.6f, 0.2f, 1), "(%d loading)", 3 - state.referencesAvailable);
+  }
+  ImGui::Text("working set: %d resident, %.0f MB, %d pending; hits %llu, misses %llu", state.cache.resident,
+              double(state.cache.residentBytes) / 1e6, state.cache.pending, (unsigned long long)state.cache.hits,
+              (unsigned long long)state.cache.misses);
+  ImGui::Separator();
+  ImGui::SliderFloat("epsilon", &state.warp.blend.epsilon, 0.001f, 0.5f, "%.3f", ImGuiSliderFlags_Logarithmic);
+  ImGui::SliderFloat("r_min (m)", &state.warp.blend.minimumWeightDistance, 0.01f, 2.0f, "%.2f");
+  ImGui::SliderFloat("grazing angle", &state.grazingAngleDegrees, 0.5f, 30.0f, "%.1f deg");
+  ImGui::SameLine();
+  if (ImGui::Button("apply")) state.stretchChanged = true;
+  bool markHoles = state.warp.holeColor != glm::vec3(0.0f);
+  if (ImGui::Checkbox("mark holes in magenta", &markHoles)) state.warp.holeColor = markHoles ? glm::vec3(1, 0, 1) : glm::vec3(0);
+  ImGui::Checkbox("show references (red, green, blue)", &state.warp.showSources);
+  ImGui::SliderFloat("field of view", &state.verticalFovDegrees, 30.0f, 110.0f, "%.0f deg");
+  ImGui::SliderFloat("render scale", &state.renderScale, 0.25f, 1.0f, "%.2f");
+  ImGui::SliderFloat("walking speed", &state.walk.speed, 0.1f, 5.0f, "%.1f m/s");
+  ImGui::Text("position (%.2f, %.2f)  yaw %.0f  pitch %.0f", state.walk.position.x, state.walk.position.y, state.walk.yawDegrees,
+              state.walk.pitchDegrees);
+  if (ImGui::Button("screenshot (F12)")) state.screenshotRequested = true;
+  ImGui::TextDisabled("W A S D / arrows: walk, Shift: run, drag: look around");
+  ImGui::End();
+}
+
+}  // namespace triwalk

@@ -1,0 +1,49 @@
+// `triwalk view`: open the walkthrough viewer.
+
+#include "app/commands.h"
+#include "app/quality_options.h"
+#include "app/viewer/viewer_app.h"
+#include "app/walkthrough_setup.h"
+#include "core/errors.h"
+
+namespace triwalk {
+
+void registerViewCommand(CLI::App& app) {
+  struct Arguments {
+    std::string dataset, selection, size = "1280x720", screenshot, path;
+    int frames = 0;
+    int errorWidth = 256;
+    size_t cacheMegabytes = 1024;
+    QualityArguments quality;
+  };
+  auto arguments = std::make_shared<Arguments>();
+  CLI::App* command = app.add_subcommand("view", "Walk through a data set (GLFW window with Dear ImGui panels)");
+  command->add_option("--dataset", arguments->dataset, "Data set directory")->required();
+  command->add_option("--selection", arguments->selection,
+                      "Selection to walk through and step (default: the dense triangulation, to decimate here)");
+  command->add_option("--size", arguments->size, "Window size WIDTHxHEIGHT")->capture_default_str();
+  command->add_option("--cache-mb", arguments->cacheMegabytes, "Memory for resident panoramas, MiB")->capture_default_str();
+  command->add_option("--error-width", arguments->errorWidth, "Panorama width of the decimation's errors")
+      ->capture_default_str();
+  command->add_option("--frames", arguments->frames, "Render this many frames, write --screenshot and exit");
+  command->add_option("--screenshot", arguments->screenshot, "With --frames: PNG of the window at the last frame");
+  command->add_option("--path", arguments->path, "With --frames: camera path file (x y z yaw pitch a line)");
+  addRenderQualityOptions(*command, arguments->quality);
+  command->callback([arguments] {
+    const Arguments& a = *arguments;
+    ViewerOptions options;
+    options.dataset = a.dataset;
+    options.selection = a.selection;
+    parseSize(a.size, "--size", options.width, options.height);
+    options.cacheBytes = a.cacheMegabytes << 20;
+    options.errorWidth = a.errorWidth;
+    options.synthesis = synthesisOptions(a.quality);
+    options.frames = a.frames;
+    options.screenshot = a.screenshot;
+    if (!a.path.empty()) options.path = readCameraPath(a.path);
+    if (options.frames > 0 && options.screenshot.empty()) throw InputError("--frames", "give --screenshot FILE too");
+    runViewer(options);
+  });
+}
+
+}  // namespace triwalk

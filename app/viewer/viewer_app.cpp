@@ -1,0 +1,238 @@
+// The viewer's main loop, read top to bottom as in Dear ImGui's GLFW
+// example: set up, loop (poll, skip while iconified, walk, render the warp,
+// build the panels, draw them, swap), tear down in reverse order.
+
+#include "app/viewer/viewer_app.h"
+
+#include "app/viewer/viewer_state.h"
+#include "app/walkthrough_setup.h"
+#include "core/png_io.h"
+#include "core/selection.h"
+#include "render/glfw_window_context.h"
+#include "render/walkthrough_renderer.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+namespace triwalk {
+
+namespace {
+
+Rgb8Image readWindow(int width, int height) {
+  std::vector<glm::u8vec3> rows(size_t(width) * size_t(height));
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glNamedFramebufferReadBuffer(0, GL_BACK);
+  glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, rows.data());
+  Rgb8Image image(width, height);
+  for (int y = 0; y < height; ++y) {
+    std::copy_n(rows.begin() + ptrdiff_t(size_t(height - 1 - y) * size_t(width)), width,
+                image.pixels.begin() + ptrdiff_t(size_t(y) * size_t(width)));
+  }
+  return image;
+}
+
+// A start inside the covered area: the middle of the mesh if covered,
+// else the centroid of the triangle nearest to it.
+glm::vec3 startPosition(const ViewMesh& mesh, float eye) {
+  glm::dvec2 lower(1e30), upper(-1e30);
+  for (int v : mesh.vertices()) lower = glm::min(lower, mesh.position(v)), upper = glm::max(upper, mesh.position(v));
+  const glm::dvec2 middle = 0.5 * (lower + upper);
+  const int t = mesh.locate(middle);
+  return glm::vec3(glm::vec2(mesh.contains(t, middle) ? middle : mesh.centroid(t)), eye);
+}
+
+class Viewer {
+public:
+  explicit Viewer(const ViewerOptions& options)
+      : options_(options), context_(options.width, options.height, "triwalk"), dataset_(Dataset::open(options.dataset)) {
+    std::optional<Selection> selection;
+    if (!options.selection.empty()) selection = readSelection(options.selection, dataset_);
+    TriangleErrorSettings errorSettings;
+    errorSettings.width = options.errorWidth;
+    errorSettings.synthesis = options.synthesis;
+    session_ = std::make_unique<DecimationSession>(dataset_, errorSettings, DecimationOptions{}, selection);
+    state_.dataset = &dataset_;
+    state_.session = session_.get();
+    state_.snapshot = session_->snapshot();
+    state_.mesh = ViewMesh(samplePositions(dataset_), state_.snapshot.triangles);
+    state_.warp.blend = options.synthesis.blend;
+    state_.grazingAngleDegrees = options.synthesis.warp.grazingAngleDegrees;
+    state_.walk.position = startPosition(state_.mesh, sampleEyeHeight(dataset_));
+    warpOptions_ = options.synthesis.warp;
+    cache_ = std::make_unique<PanoramaCache>(dataset_, warpOptions_, options.cacheBytes);
+    renderer_ = std::make_unique<WalkthroughRenderer>(state_.mesh, *cache_, options.width, options.height);
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini beside the data
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForOpenGL(context_.window(), true);
+    ImGui_ImplOpenGL3_Init("#version 450");
+  }
+
+  ~Viewer() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+
+  int run() {
+    auto last = std::chrono::steady_clock::now();
+    for (int frame = 0; !context_.shouldClose(); ++frame) {
+      glfwPollEvents();
+      if (glfwGetWindowAttrib(context_.window(), GLFW_ICONIFIED)) {
+        glfwWaitEventsTimeout(0.1);
+        continue;
+      }
+      const auto now = std::chrono::steady_clock::now();
+      const double seconds = std::chrono::duration<double>(now - last).count();
+      last = now;
+      const bool scripted = options_.frames > 0;
+      const bool finalFrame = scripted && frame + 1 >= options_.frames;
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+
+      update(seconds, frame, scripted, finalFrame);
+      renderWalkthrough(finalFrame);
+      drawMapPanel(state_);
+      drawDecimationPanel(state_);
+      drawInspectorPanel(state_);
+      drawRenderPanel(state_);
+      drawLoadingNotice();
+
+      ImGui::Render();
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      if (state_.screenshotRequested || finalFrame) saveScreenshot(finalFrame);
+      context_.swapBuffers();
+      state_.frameMilliseconds = 1000.0 * std::chrono::duration<double>(std::chrono::steady_clock::now() - now).count();
+      state_.framesPerSecond = seconds > 0.0 ? 0.9 * state_.framesPerSecond + 0.1 / seconds : 0.0;
+      if (finalFrame) break;
+    }
+    return 0;
+  }
+
+private:
+  void update(double seconds, int frame, bool scripted, bool finalFrame) {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (!io.WantCaptureKeyboard && ImGui::IsKeyPressed(GLFW_KEY_F12)) state_.screenshotRequested = true;
+    if (scripted && !options_.path.empty()) {
+      const CameraPose& pose = options_.path[size_t(frame) % options_.path.size()];
+      state_.walk.position = pose.position;
+      state_.walk.yawDegrees = pose.yawDegrees;
+      state_.walk.pitchDegrees = pose.pitchDegrees;
+    } else if (!scripted) {
+      walk_.update(context_.window(), seconds, !io.WantCaptureKeyboard, !io.WantCaptureMouse, state_.mesh, state_.walk);
+    }
+    // A scripted run shows the decimation's state once it has loaded.
+    if (finalFrame) {
+      while (session_->snapshot().busy) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    const DecimationSession::Snapshot snapshot = session_->snapshot();
+    if (snapshot.version != state_.snapshot.version) {
+      const bool meshChanged = snapshot.triangles != state_.snapshot.triangles;
+      state_.snapshot = snapshot;
+      if (meshChanged) {
+        state_.mesh = ViewMesh(samplePositions(dataset_), snapshot.triangles);
+        renderer_->setMesh(state_.mesh);
+        state_.selectedTriangle = -1;
+        state_.inspection.reset();
+      }
+    }
+    if (const auto inspection = session_->inspection();
+        inspection && (!state_.inspection || inspection->triangle != state_.inspection->triangle)) {
+      state_.inspection = inspection;
+      state_.reconstructionImage.upload(inspection->reconstruction);
+      state_.truthImage.upload(inspection->truth);
+      state_.heatmapImage.upload(inspection->heatmap);
+    }
+    if (state_.stretchChanged) {
+      // New stretch test: the panoramas are prepared again.
+      state_.stretchChanged = false;
+      warpOptions_.grazingAngleDegrees = state_.grazingAngleDegrees;
+      warpOptions_.stretchTest = StretchTest::GrazingAngle;
+      renderer_.reset();
+      cache_ = std::make_unique<PanoramaCache>(dataset_, warpOptions_, options_.cacheBytes);
+      renderer_ = std::make_unique<WalkthroughRenderer>(state_.mesh, *cache_, options_.width, options_.height);
+    }
+  }
+
+  void renderWalkthrough(bool wait) {
+    int width = 0, height = 0;
+    context_.framebufferSize(width, height);
+    if (width <= 0 || height <= 0) return;
+    PinholeCamera camera;
+    camera.width = std::max(16, int(float(width) * state_.renderScale));
+    camera.height = std::max(16, int(float(height) * state_.renderScale));
+    camera.verticalFovDegrees = state_.verticalFovDegrees;
+    camera.position = state_.walk.position;
+    camera.yawDegrees = state_.walk.yawDegrees;
+    camera.pitchDegrees = state_.walk.pitchDegrees;
+    const WalkthroughRenderer::Frame frame = renderer_->render(camera, state_.warp, wait);
+    state_.currentTriangle = frame.triangle;
+    state_.references = frame.references;
+    state_.referencesAvailable = frame.available;
+    state_.frame = frame.statistics;
+    state_.cache = cache_->statistics();
+
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);
+    glClearColor(0.08f, 0.08f, 0.1f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    if (frame.available > 0) {
+      const GpuWarper& warper = renderer_->warper();
+      glBlitNamedFramebuffer(warper.outputFramebuffer(), 0, 0, 0, warper.width(), warper.height(), 0, 0, width, height,
+                             GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    }
+  }
+
+  void drawLoadingNotice() {
+    if (state_.referencesAvailable >= 3) return;
+    const ImVec2 size = ImGui::GetIO().DisplaySize;
+    char text[96];
+    std::snprintf(text, sizeof text, "loading %d of the 3 panoramas...", 3 - state_.referencesAvailable);
+    ImGui::GetForegroundDrawList()->AddText(ImVec2(size.x * 0.5f - 100.0f, size.y - 40.0f), IM_COL32(255, 200, 80, 255), text);
+  }
+
+  void saveScreenshot(bool scriptedFinal) {
+    state_.screenshotRequested = false;
+    int width = 0, height = 0;
+    context_.framebufferSize(width, height);
+    std::filesystem::path path = options_.screenshot;
+    if (!scriptedFinal || path.empty()) {
+      char name[64];
+      std::snprintf(name, sizeof name, "triwalk_screenshot_%03d.png", screenshots_++);
+      path = name;
+    }
+    writePng(path, readWindow(width, height));
+    std::printf("screenshot %s\n", path.c_str());
+  }
+
+  ViewerOptions options_;
+  GlfwWindowContext context_;
+  Dataset dataset_;
+  std::unique_ptr<DecimationSession> session_;
+  WarpOptions warpOptions_;
+  std::unique_ptr<PanoramaCache> cache_;
+  std::unique_ptr<WalkthroughRenderer> renderer_;
+  ViewerState state_;
+  WalkController walk_;
+  int screenshots_ = 0;
+};
+
+}  // namespace
+
+int runViewer(const ViewerOptions& options) {
+  Viewer viewer(options);
+  return viewer.run();
+}
+
+}  // namespace triwalk

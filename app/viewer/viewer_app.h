@@ -1,0 +1,30 @@
+#pragma once
+// `triwalk view`: the interactive walkthrough with its panels.
+
+#include "core/camera_path.h"
+#include "core/view_synthesis.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace triwalk {
+
+struct ViewerOptions {
+  std::filesystem::path dataset;
+  std::filesystem::path selection;  // empty: start from the dense triangulation
+  int width = 1280, height = 720;
+  size_t cacheBytes = size_t(1) << 30;
+  int errorWidth = 256;
+  SynthesisOptions synthesis;
+  // Scripted use: render this many frames (along the path, if any), write
+  // a screenshot of the window and exit.
+  int frames = 0;
+  std::filesystem::path screenshot;
+  std::vector<CameraPose> path;
+};
+
+// Returns the process exit status.
+int runViewer(const ViewerOptions& options);
+
+}  // namespace triwalk

@@ -1,0 +1,62 @@
+#pragma once
+// What the viewer's panels show and change, in one place: each panel is a
+// function of this state (SIBR's onGUI), the app updates and renders it.
+
+#include "app/viewer/decimation_session.h"
+#include "app/viewer/gl_image.h"
+#include "app/viewer/walk_controller.h"
+#include "core/view_mesh.h"
+#include "render/gpu_warper.h"
+#include "render/panorama_cache.h"
+
+#include <array>
+#include <optional>
+#include <string>
+
+namespace triwalk {
+
+struct ViewerState {
+  const Dataset* dataset = nullptr;
+  DecimationSession* session = nullptr;
+  DecimationSession::Snapshot snapshot;
+  ViewMesh mesh;
+
+  WalkState walk;
+  float verticalFovDegrees = 60.0f;
+  float renderScale = 1.0f;  // share of the window's pixels the warp renders
+  GpuWarpSettings warp;
+  float grazingAngleDegrees = WarpOptions{}.grazingAngleDegrees;
+  bool stretchChanged = false;  // apply: reload panoramas with the new stretch test
+
+  int currentTriangle = -1;
+  std::array<int, 3> references{-1, -1, -1};
+  int referencesAvailable = 0;
+  int selectedTriangle = -1;
+
+  // Decimation panel inputs.
+  int stepCount = 10;
+  float runError = 1.85f;
+  int runSamples = 21;
+  std::string savePath = "selection.json";
+  std::string message;
+
+  // Inspector.
+  std::optional<DecimationSession::Inspection> inspection;
+  GlImage reconstructionImage, truthImage, heatmapImage;
+
+  // Statistics.
+  double framesPerSecond = 0.0;
+  double frameMilliseconds = 0.0;
+  PanoramaCache::Statistics cache;
+  GpuFrameStatistics frame;
+
+  bool screenshotRequested = false;
+  std::string screenshotPath;
+};
+
+void drawMapPanel(ViewerState& state);
+void drawDecimationPanel(ViewerState& state);
+void drawInspectorPanel(ViewerState& state);
+void drawRenderPanel(ViewerState& state);
+
+}  // namespace triwalk

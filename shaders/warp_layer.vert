@@ -1,0 +1,43 @@
+#version 450 core
+// One reference panorama as a grid mesh displaced by its distance texture
+// (the CPU reference warp's mesh, core/warp.h): vertex i is pixel
+// (i mod W, i div W), W*H and W*H+1 are the poles; a vertex at infinity
+// (sky) is a direction, w = 0.
+#include "projection.glsl"
+uniform sampler2D colorTexture;
+uniform sampler2D distanceTexture;
+uniform ivec2 panoramaSize;
+uniform float panoramaYaw;
+uniform vec3 sourcePosition;
+uniform vec2 poleDistances;
+uniform vec3 poleColors[2];
+uniform mat4 viewProjection;  // world -> clip, reversed depth, no far plane
+uniform vec3 cameraPosition;
+
+out vec3 vertexColor;
+out float inverseDistance;  // 1 / metres from the camera; 0 at infinity
+
+void main() {
+  int pixels = panoramaSize.x * panoramaSize.y;
+  vec3 direction;
+  float distance;
+  if (gl_VertexID >= pixels) {
+    int pole = gl_VertexID - pixels;
+    direction = vec3(0.0, 0.0, pole == 0 ? 1.0 : -1.0);
+    distance = poleDistances[pole];
+    vertexColor = poleColors[pole];
+  } else {
+    ivec2 pixel = ivec2(gl_VertexID % panoramaSize.x, gl_VertexID / panoramaSize.x);
+    direction = equirectDirection(vec2(pixel) + 0.5, vec2(panoramaSize), panoramaYaw);
+    distance = texelFetch(distanceTexture, pixel, 0).r;
+    vertexColor = texelFetch(colorTexture, pixel, 0).rgb;
+  }
+  if (isinf(distance)) {
+    gl_Position = viewProjection * vec4(direction, 0.0);
+    inverseDistance = 0.0;
+  } else {
+    vec3 world = sourcePosition + distance * direction;
+    gl_Position = viewProjection * vec4(world, 1.0);
+    inverseDistance = 1.0 / length(world - cameraPosition);
+  }
+}

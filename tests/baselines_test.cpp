@@ -1,0 +1,57 @@
+// The baselines edge collapse is compared with.
+
+#include "core/baselines.h"
+#include "core/dataset.h"
+#include "core/selection.h"
+#include "tests/analytic_scene.h"
+#include "tests/test_support.h"
+
+#include <doctest/doctest.h>
+
+#include <set>
+
+namespace triwalk {
+
+TEST_CASE("uniform: a regular sub-grid of the capture paths with the corners, near the asked count") {
+  testing::TemporaryDirectory directory;
+  // 11 paths x 6 steps over 4 x 2 m: spacing 0.4 m both ways.
+  testing::writeAnalyticDataset(directory.path(), 11, 6, 16, 0);
+  const Dataset dataset = Dataset::open(directory.path());
+  // 6 paths x 3 steps (spacing 0.8 x 1.0 m) is the even grid of 18; the
+  // middle step is round(2.5) = 3.
+  const std::vector<int> selection = uniformSelection(dataset, 18);
+  REQUIRE(selection.size() == 18);
+  std::set<std::pair<int, int>> grid;
+  for (int s : selection) grid.insert({dataset.sample(s).path, dataset.sample(s).step});
+  const std::set<std::pair<int, int>> expected = {{0, 0}, {0, 3}, {0, 5}, {2, 0}, {2, 3}, {2, 5}, {4, 0}, {4, 3}, {4, 5},
+                                                  {6, 0}, {6, 3}, {6, 5}, {8, 0}, {8, 3}, {8, 5}, {10, 0}, {10, 3}, {10, 5}};
+  CHECK(grid == expected);
+}
+
+TEST_CASE("k-medoids: k distinct samples spread over the area, the same every time") {
+  std::vector<glm::dvec2> positions;
+  for (int x = 0; x < 20; ++x) {
+    for (int y = 0; y < 10; ++y) positions.emplace_back(0.5 * x, 0.5 * y);
+  }
+  const std::vector<int> medoids = kMedoidsSelection(positions, 8);
+  REQUIRE(medoids.size() == 8);
+  CHECK(std::set<int>(medoids.begin(), medoids.end()).size() == 8);
+  CHECK(kMedoidsSelection(positions, 8) == medoids);
+  // Every position is within 2 m of a medoid (8 clusters over 9.5 x 4.5 m;
+  // a single cluster around the centre would leave corners 5.2 m away).
+  for (glm::dvec2 p : positions) {
+    double nearest = 1e9;
+    for (int m : medoids) nearest = std::min(nearest, glm::length(p - positions[size_t(m)]));
+    CHECK(nearest < 2.0);
+  }
+}
+
+TEST_CASE("random: seeded, distinct, sorted") {
+  const std::vector<int> a = randomSelection(100, 10, 7), b = randomSelection(100, 10, 7), c = randomSelection(100, 10, 8);
+  CHECK(a == b);
+  CHECK(a != c);
+  CHECK(std::set<int>(a.begin(), a.end()).size() == 10);
+  CHECK(std::is_sorted(a.begin(), a.end()));
+}
+
+}  // namespace triwalk

@@ -1,0 +1,154 @@
+// The GPU warp against the CPU reference, across OpenGL backends, and
+// against committed golden frames.
+
+#include "core/blend.h"
+#include "core/color.h"
+#include "core/dataset.h"
+#include "core/image_compare.h"
+#include "core/png_io.h"
+#include "core/selection.h"
+#include "core/view_synthesis.h"
+#include "render/dataset_capture.h"
+#include "render/gl_context.h"
+#include "render/gpu_warper.h"
+#include "render/scene_description.h"
+#include "render/walkthrough_renderer.h"
+#include "tests/analytic_scene.h"
+#include "tests/test_support.h"
+
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+
+namespace triwalk {
+
+namespace {
+
+PinholeCamera testCamera(glm::vec3 position, float yaw, int width, int height) {
+  PinholeCamera camera;
+  camera.width = width;
+  camera.height = height;
+  camera.verticalFovDegrees = 70.0f;
+  camera.position = position;
+  camera.yawDegrees = yaw;
+  camera.pitchDegrees = -5.0f;
+  return camera;
+}
+
+// GPU frame of a camera from three samples of a data set.
+Rgb8Image gpuFrame(const Dataset& dataset, const std::vector<int>& references, const PinholeCamera& camera,
+                   HeadlessBackend backend) {
+  auto context = createHeadlessContext(backend);
+  std::vector<std::unique_ptr<GpuPanorama>> panoramas;
+  std::vector<const GpuPanorama*> pointers;
+  for (int sample : references) {
+    const ViewRecord& view = dataset.sample(sample);
+    panoramas.push_back(std::make_unique<GpuPanorama>(preparePanorama(dataset.loadView(view), view.position, 0.0f, WarpOptions{})));
+    pointers.push_back(panoramas.back().get());
+  }
+  GpuWarper warper(camera.width, camera.height);
+  warper.render(camera, pointers, GpuWarpSettings{});
+  return warper.readPixels();
+}
+
+Rgb8Image cpuFrame(const Dataset& dataset, const std::vector<int>& references, const PinholeCamera& camera) {
+  std::vector<std::unique_ptr<WarpSource>> sources;
+  std::vector<const WarpSource*> pointers;
+  for (int sample : references) {
+    const ViewRecord& view = dataset.sample(sample);
+    sources.push_back(std::make_unique<WarpSource>(dataset.loadView(view), view.position, 0.0f, WarpOptions{}));
+    pointers.push_back(sources.back().get());
+  }
+  const SynthesizedView view = synthesizeView(pointers, DestinationCamera::camera(camera), SynthesisOptions{});
+  Rgb8Image image(camera.width, camera.height);
+  for (size_t i = 0; i < image.pixelCount(); ++i) {
+    image.pixels[i] = toBytes(view.blended.hole[i] ? GpuWarpSettings{}.holeColor : displayColor(view.blended.color.pixels[i]));
+  }
+  return image;
+}
+
+}  // namespace
+
+TEST_CASE("GPU warp matches the CPU reference warp (PSNR >= 35 dB), through EGL and OSMesa alike") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory.path(), 3, 3, 512, 0);
+  const Dataset dataset = Dataset::open(directory.path());
+  // Samples 3, 4, 6 are (2, 0), (2, 1), (4, 0); the camera is between them.
+  const std::vector<int> references = {3, 4, 6};
+  for (const float yaw : {0.0f, 130.0f, 250.0f}) {
+    const PinholeCamera camera = testCamera({2.7f, 0.4f, 1.4f}, yaw, 320, 240);
+    const Rgb8Image cpu = cpuFrame(dataset, references, camera);
+    const Rgb8Image egl = gpuFrame(dataset, references, camera, HeadlessBackend::Egl);
+    const Rgb8Image osmesa = gpuFrame(dataset, references, camera, HeadlessBackend::OsMesa);
+    INFO("yaw " << yaw << ": PSNR " << psnr(egl, cpu) << " dB");
+    // Pixels may differ where a triangle edge passes exactly through a
+    // pixel centre (OpenGL's top-left rule against the CPU's inclusive
+    // edges) and where perspective interpolation rounds differently.
+    CHECK(psnr(egl, cpu) >= 35.0);
+    CHECK(differingPixelFraction(egl, cpu, 16) < 0.01);
+    CHECK(psnr(egl, osmesa) >= 60.0);
+  }
+}
+
+TEST_CASE("the walkthrough renderer draws the three references of the triangle around the camera") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory.path(), 3, 3, 128, 0);
+  const Dataset dataset = Dataset::open(directory.path());
+  auto context = createHeadlessContext();
+  const ViewMesh mesh = ViewMesh::delaunay(samplePositions(dataset), {}, "test");
+  PanoramaCache cache(dataset, WarpOptions{}, size_t(64) << 20);
+  WalkthroughRenderer renderer(mesh, cache, 160, 120);
+  const glm::vec3 position(2.7f, 0.4f, 1.4f);
+  const WalkthroughRenderer::Frame frame = renderer.render(testCamera(position, 0.0f, 160, 120), GpuWarpSettings{}, true);
+  REQUIRE(frame.triangle >= 0);
+  CHECK(mesh.contains(frame.triangle, glm::dvec2(position)));
+  CHECK(frame.available == 3);
+  std::array<int, 3> expected{mesh.triangles()[size_t(frame.triangle)][0], mesh.triangles()[size_t(frame.triangle)][1],
+                              mesh.triangles()[size_t(frame.triangle)][2]};
+  CHECK(frame.references == expected);
+  // Outside the covered area: the nearest triangle still renders.
+  const WalkthroughRenderer::Frame outside = renderer.render(testCamera({6.0f, 3.0f, 1.4f}, 0.0f, 160, 120), GpuWarpSettings{}, true);
+  CHECK(outside.triangle >= 0);
+  CHECK(outside.available == 3);
+  // The working set never loads a sample twice while it stays resident.
+  CHECK(cache.statistics().resident >= 3);
+}
+
+TEST_CASE("golden frames: the built-in scene captured small and walked through renders as committed") {
+  // Regenerate with: TRIWALK_UPDATE_GOLDEN=1 build/release/tests/triwalk_render_tests -tc="golden*"
+  testing::TemporaryDirectory directory;
+  auto context = createHeadlessContext();
+  const Scene scene = loadSceneDescription(builtinScenePath());
+  CaptureOptions options;
+  options.paths = 6;
+  options.perPath = 3;
+  options.width = 256;
+  options.probes = 0;
+  options.quiet = true;
+  captureDataset(scene, "builtin", options, directory / "builtin");
+  const Dataset dataset = Dataset::open(directory / "builtin");
+  const ViewMesh mesh = ViewMesh::delaunay(samplePositions(dataset), {}, "golden");
+  PanoramaCache cache(dataset, WarpOptions{}, size_t(256) << 20);
+  WalkthroughRenderer renderer(mesh, cache, 320, 180);
+  const bool update = std::getenv("TRIWALK_UPDATE_GOLDEN") != nullptr;
+  const std::pair<glm::vec3, float> poses[] = {{{3.1f, 2.2f, 1.6f}, 20.0f}, {{6.4f, 1.1f, 1.6f}, 95.0f}, {{8.0f, 3.9f, 1.6f}, 230.0f}};
+  for (size_t i = 0; i < std::size(poses); ++i) {
+    PinholeCamera camera = testCamera(poses[i].first, poses[i].second, 320, 180);
+    camera.verticalFovDegrees = 60.0f;
+    renderer.render(camera, GpuWarpSettings{}, true);
+    const Rgb8Image frame = renderer.warper().readPixels();
+    const std::filesystem::path golden = assetDirectory() / "golden" / ("builtin_frame_" + std::to_string(i) + ".png");
+    if (update) {
+      std::filesystem::create_directories(golden.parent_path());
+      writePng(golden, frame);
+      continue;
+    }
+    REQUIRE(std::filesystem::exists(golden));
+    const Rgb8Image expected = readPng(golden);
+    INFO("frame " << i << ": PSNR " << psnr(frame, expected) << " dB");
+    CHECK(psnr(frame, expected) >= 40.0);
+    CHECK(differingPixelFraction(frame, expected, 8) < 0.005);
+  }
+}
+
+}  // namespace triwalk

@@ -3,6 +3,7 @@
 #include "core/errors.h"
 #include "render/dataset_capture.h"
 #include "render/gl_context.h"
+#include "render/walkable_area.h"
 
 #include <cstdio>
 
@@ -16,6 +17,7 @@ void registerCaptureCommand(CLI::App& app) {
     std::vector<float> area;
     float eyeHeight = 0.0f;
     float spacing = 0.0f;
+    bool autoArea = false;
     CaptureOptions options;
     SceneImportArguments import;
   };
@@ -42,6 +44,8 @@ void registerCaptureCommand(CLI::App& app) {
   command->add_option("--probes", arguments->options.probes, "Held-out views at random positions")
       ->capture_default_str();
   command->add_option("--seed", arguments->options.seed, "Seed of the probe positions")->capture_default_str();
+  command->add_flag("--auto-area", arguments->autoArea,
+                    "Find the walkable area by probing (default for imported scenes without --area)");
   command->add_option("--gl", arguments->gl, "Headless OpenGL: auto, egl or osmesa")->capture_default_str();
   command->add_flag("--quiet", arguments->options.quiet, "No progress output");
   addSceneImportOptions(*command, arguments->import);
@@ -51,13 +55,22 @@ void registerCaptureCommand(CLI::App& app) {
     if (!a.area.empty()) a.options.area = glm::vec4(a.area[0], a.area[1], a.area[2], a.area[3]);
     if (a.eyeHeight > 0.0f) a.options.eyeHeight = a.eyeHeight;
     if (a.spacing > 0.0f) a.options.spacing = a.spacing;
-    const LoadedScene loaded = loadSceneForCapture(a.scene, a.import);
+    LoadedScene loaded = loadSceneForCapture(a.scene, a.import);
+    auto context = createHeadlessContext(parseHeadlessBackend(a.gl));
+    if (a.autoArea || (loaded.imported && a.area.empty())) {
+      const float eyeHeight = a.eyeHeight > 0.0f ? a.eyeHeight : loaded.scene.walkableArea.eyeHeight;
+      const WalkableAreaProposal proposal = proposeWalkableArea(loaded.scene, eyeHeight, 0.5f, a.scene);
+      std::printf("%s\n", proposal.reason.c_str());
+      loaded.scene.walkableArea.min = {proposal.area.x, proposal.area.y};
+      loaded.scene.walkableArea.max = {proposal.area.z, proposal.area.w};
+      loaded.scene.walkableArea.floorHeight = proposal.floorZ;
+      loaded.scene.walkableArea.eyeHeight = eyeHeight;
+    }
     const CapturePlan plan = planCapture(loaded.scene, a.options);
     std::printf("scene %s: %zu triangles; %d paths x %d samples over [%.2f, %.2f] x [%.2f, %.2f] m at z = %.2f m, "
                 "%d probes, %dx%d\n",
                 loaded.name.c_str(), loaded.scene.triangleCount(), plan.paths, plan.perPath, plan.area.x, plan.area.z,
                 plan.area.y, plan.area.w, plan.eyeZ, a.options.probes, a.options.width, a.options.width / 2);
-    auto context = createHeadlessContext(parseHeadlessBackend(a.gl));
     const CaptureSummary summary = captureDataset(loaded.scene, loaded.name, a.options, a.out);
     std::printf("captured %d samples and %d probes into %s in %.1f s (%.2f panoramas/s) with %s\n", summary.samples,
                 summary.probes, a.out.c_str(), summary.seconds,

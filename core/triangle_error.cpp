@@ -43,12 +43,43 @@ DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const Trian
 TriangleDestinations parseTriangleDestinations(const std::string& name) {
   if (name == "centroid") return TriangleDestinations::Centroid;
   if (name == "quadrature") return TriangleDestinations::Quadrature;
-  throw InputError("--triangle-destinations", "unknown choice '" + name + "' (use centroid or quadrature)");
+  if (name == "interior") return TriangleDestinations::Interior;
+  throw InputError("--triangle-destinations", "unknown choice '" + name + "' (use centroid, quadrature or interior)");
 }
 
 std::vector<std::pair<int, double>> DatasetTriangleErrors::destinationsOf(const Triangle& triangle) const {
   const glm::dvec2 a = positions_[size_t(triangle[0])], b = positions_[size_t(triangle[1])], c = positions_[size_t(triangle[2])];
   const glm::dvec2 centroid = (a + b + c) / 3.0;
+  if (settings_.destinations == TriangleDestinations::Interior) {
+    std::vector<int> inside;
+    for (int s = 0; s < int(positions_.size()); ++s) {
+      if (s == triangle[0] || s == triangle[1] || s == triangle[2]) continue;
+      const glm::dvec2 p = positions_[size_t(s)];
+      if (orientation(a, b, p) > 0 && orientation(b, c, p) > 0 && orientation(c, a, p) > 0) inside.push_back(s);
+    }
+    if (!inside.empty()) {
+      // Spread: the sample nearest the centroid, then each next farthest
+      // from those chosen (ties: the lower index).
+      std::vector<int> chosen;
+      std::vector<double> nearest(inside.size(), std::numeric_limits<double>::max());
+      size_t next = 0;
+      for (size_t i = 1; i < inside.size(); ++i) {
+        if (glm::length(positions_[size_t(inside[i])] - centroid) < glm::length(positions_[size_t(inside[next])] - centroid)) next = i;
+      }
+      while (chosen.size() < std::min<size_t>(inside.size(), kMaxInteriorDestinations)) {
+        chosen.push_back(inside[next]);
+        size_t farthest = 0;
+        for (size_t i = 0; i < inside.size(); ++i) {
+          nearest[i] = std::min(nearest[i], glm::length(positions_[size_t(inside[i])] - positions_[size_t(inside[next])]));
+          if (nearest[i] > nearest[farthest]) farthest = i;
+        }
+        next = farthest;
+      }
+      std::vector<std::pair<int, double>> destinations;
+      for (int sample : chosen) destinations.emplace_back(sample, 1.0 / double(chosen.size()));
+      return destinations;
+    }
+  }
   std::vector<glm::dvec2> points = {centroid};
   if (settings_.destinations == TriangleDestinations::Quadrature) {
     points.push_back((centroid + a + b) / 3.0);

@@ -33,9 +33,14 @@ public:
   virtual void computeErrors(std::span<const Triangle> triangles, std::span<double> errors) = 0;
 };
 
-enum class TriangleDestinations { Centroid, Quadrature };
+// Centroid: the paper's. Quadrature: also the three sub-triangle
+// centroids. Interior: the dense samples inside the triangle, up to
+// kMaxInteriorDestinations spread by farthest-point picking (the centroid
+// sample when none is inside), the estimate the paper names ideal.
+enum class TriangleDestinations { Centroid, Quadrature, Interior };
+constexpr int kMaxInteriorDestinations = 8;
 
-// Parses "centroid" or "quadrature"; throws InputError.
+// Parses "centroid", "quadrature" or "interior"; throws InputError.
 TriangleDestinations parseTriangleDestinations(const std::string& name);
 
 struct TriangleErrorSettings {

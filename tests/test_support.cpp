@@ -1,6 +1,8 @@
 #include "tests/test_support.h"
 
 #include <atomic>
+#include <fstream>
+#include <iterator>
 #include <unistd.h>
 
 namespace triwalk::testing {
@@ -16,6 +18,11 @@ TemporaryDirectory::TemporaryDirectory() {
 TemporaryDirectory::~TemporaryDirectory() {
   std::error_code ignored;
   std::filesystem::remove_all(path_, ignored);
+}
+
+std::string readTextFileOrEmpty(const std::filesystem::path& path) {
+  std::ifstream stream(path);
+  return std::string(std::istreambuf_iterator<char>(stream), {});
 }
 
 void requireInputError(const std::function<void()>& action, const std::string& subject, const std::string& problem) {

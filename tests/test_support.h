@@ -26,6 +26,9 @@ private:
   std::filesystem::path path_;
 };
 
+// The file's text, or an empty string if it cannot be read.
+std::string readTextFileOrEmpty(const std::filesystem::path& path);
+
 // Runs action, which must throw InputError whose one-line message contains
 // both the expected subject (a file name) and the expected problem text.
 void requireInputError(const std::function<void()>& action, const std::string& subject, const std::string& problem);

@@ -3,6 +3,7 @@
 
 #include "app/bench_groups.h"
 #include "app/commands.h"
+#include "core/errors.h"
 #include "render/gl_context.h"
 #include "render/scene_description.h"
 
@@ -17,11 +18,11 @@ void registerBenchCommand(CLI::App& app) {
     std::string gl = "auto";
     int captureViews = 20;
     int decimationWidth = 256;
-    std::string dataset;
+    std::string dataset, selection;
   };
   auto arguments = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand("bench", "Measure throughput and print a table (machine, sizes, figures)");
-  command->add_option("--only", arguments->only, "Run only these groups: capture, decimate, warp, render")->delimiter(',');
+  command->add_option("--only", arguments->only, "Run only these groups: capture, decimate, warp, render, viewer")->delimiter(',');
   command->add_option("--gl", arguments->gl, "Headless OpenGL: auto, egl or osmesa")->capture_default_str();
   command->add_option("--capture-views", arguments->captureViews, "Panoramas rendered for the capture figure")
       ->capture_default_str()->check(CLI::PositiveNumber);
@@ -29,6 +30,7 @@ void registerBenchCommand(CLI::App& app) {
       ->capture_default_str()->check(CLI::IsMember({64, 128, 256, 512, 1024}));
   command->add_option("--dataset", arguments->dataset,
                       "Data set for the decimation figures (default: capture the default one first)");
+  command->add_option("--selection", arguments->selection, "Selection for the viewer figure (default: all samples)");
   command->callback([arguments] {
     const std::set<std::string> only(arguments->only.begin(), arguments->only.end());
     auto selected = [&](const std::string& group) { return only.empty() || only.count(group) > 0; };
@@ -47,6 +49,11 @@ void registerBenchCommand(CLI::App& app) {
       const BenchViews views = captureBenchViews();
       if (selected("warp")) benchWarp(table, views, arguments->decimationWidth);
       if (selected("render")) benchRender(table, views, 60);
+    }
+    if (selected("viewer")) {
+      if (arguments->dataset.empty()) throw InputError("--dataset", "the viewer figure walks through a data set: give --dataset");
+      const Dataset dataset = Dataset::open(arguments->dataset);
+      benchViewer(table, dataset, arguments->selection, 300);
     }
     table.print(glDescription);
   });

@@ -3,6 +3,7 @@
 // scene captured once at the sizes they need.
 
 #include "app/bench_table.h"
+#include "core/dataset.h"
 #include "core/image.h"
 #include "render/scene.h"
 
@@ -26,6 +27,8 @@ BenchViews captureBenchViews();
 void benchCapture(BenchTable& table, const Scene& scene, int width, int views);
 void benchWarp(BenchTable& table, const BenchViews& views, int decimationWidth);
 void benchRender(BenchTable& table, const BenchViews& views, int frames);
+// The viewer's frame loop along a walk (selection empty: the dense mesh).
+void benchViewer(BenchTable& table, const Dataset& dataset, const std::string& selection, int frames);
 // datasetDirectory empty: captures the default data set first.
 void benchDecimate(BenchTable& table, const Scene& scene, const std::string& datasetDirectory, int errorWidth);
 

@@ -60,7 +60,7 @@ void GpuWarper::resize(int width, int height) {
   glTextureStorage2D(depth_.get(), 1, GL_DEPTH_COMPONENT32F, width, height);
   for (size_t k = 0; k < layers_.size(); ++k) {
     layers_[k] = createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(layers_[k].get(), 1, GL_RGBA32F, width, height);
+    glTextureStorage2D(layers_[k].get(), 1, GL_RGBA16F, width, height);
     layerFramebuffers_[k] = createFramebuffer();
     glNamedFramebufferTexture(layerFramebuffers_[k].get(), GL_COLOR_ATTACHMENT0, layers_[k].get(), 0);
     glNamedFramebufferTexture(layerFramebuffers_[k].get(), GL_DEPTH_ATTACHMENT, depth_.get(), 0);

@@ -7,6 +7,22 @@
 
 namespace triwalk {
 
+// Two triangles for each cell of a grid of vertices laid out row by row
+// from first, rowLength vertices a row; reverse flips their facing.
+void MeshBuilder::addGridTriangles(uint32_t first, uint32_t rowLength, int cellsAcross, int cellsDown, bool reverse) {
+  for (int j = 0; j < cellsDown; ++j) {
+    for (int i = 0; i < cellsAcross; ++i) {
+      const uint32_t a = first + uint32_t(j) * rowLength + uint32_t(i);
+      const uint32_t b = a + 1, c = a + rowLength, d = c + 1;
+      if (reverse) {
+        mesh_.indices.insert(mesh_.indices.end(), {a, c, d, a, d, b});
+      } else {
+        mesh_.indices.insert(mesh_.indices.end(), {a, b, d, a, d, c});
+      }
+    }
+  }
+}
+
 MeshBuilder::MeshBuilder(int material, float textureSize) : textureSize_(textureSize) { mesh_.material = material; }
 
 uint32_t MeshBuilder::addVertex(glm::vec3 position, glm::vec3 normal, glm::vec2 uv) {
@@ -35,14 +51,7 @@ void MeshBuilder::addQuad(glm::vec3 origin, glm::vec3 edgeU, glm::vec3 edgeV, fl
       addVertex(p, normal, {glm::dot(p, axisU), glm::dot(p, axisV)});
     }
   }
-  const uint32_t rowLength = uint32_t(cellsU + 1);
-  for (int j = 0; j < cellsV; ++j) {
-    for (int i = 0; i < cellsU; ++i) {
-      const uint32_t a = first + uint32_t(j) * rowLength + uint32_t(i);
-      const uint32_t b = a + 1, c = a + rowLength, d = c + 1;
-      mesh_.indices.insert(mesh_.indices.end(), {a, b, d, a, d, c});
-    }
-  }
+  addGridTriangles(first, uint32_t(cellsU + 1), cellsU, cellsV, false);
 }
 
 void MeshBuilder::addBox(glm::vec3 lower, glm::vec3 upper, float cellSize, bool skipBottom) {
@@ -69,14 +78,7 @@ void MeshBuilder::addCylinder(glm::vec2 center, float radius, float bottom, floa
                 {circumference * float(s) / float(segments), z});
     }
   }
-  const uint32_t rowLength = uint32_t(segments + 1);
-  for (int ring = 0; ring < rings; ++ring) {
-    for (int s = 0; s < segments; ++s) {
-      const uint32_t a = first + uint32_t(ring) * rowLength + uint32_t(s);
-      const uint32_t b = a + 1, c = a + rowLength, d = c + 1;
-      mesh_.indices.insert(mesh_.indices.end(), {a, b, d, a, d, c});
-    }
-  }
+  addGridTriangles(first, uint32_t(segments + 1), segments, rings, false);
   const uint32_t capCenter = addVertex(glm::vec3(center, top), {0, 0, 1}, center);
   const uint32_t capFirst = uint32_t(mesh_.vertices.size());
   for (int s = 0; s <= segments; ++s) {
@@ -102,15 +104,8 @@ void MeshBuilder::addSphere(glm::vec3 center, float radius, int segments) {
                 {radius * longitude * 2.0f, radius * (latitude + 0.5f * glm::pi<float>()) * 2.0f});
     }
   }
-  const uint32_t rowLength = uint32_t(segments + 1);
-  for (int ring = 0; ring < rings; ++ring) {
-    for (int s = 0; s < segments; ++s) {
-      const uint32_t a = first + uint32_t(ring) * rowLength + uint32_t(s);
-      const uint32_t b = a + 1, c = a + rowLength, d = c + 1;
-      // Rows run from the north pole down, so (a, c, d) faces outward.
-      mesh_.indices.insert(mesh_.indices.end(), {a, c, d, a, d, b});
-    }
-  }
+  // Rows run from the north pole down, so the cells' order is reversed to face outward.
+  addGridTriangles(first, uint32_t(segments + 1), segments, rings, true);
 }
 
 SceneMesh MeshBuilder::take() {

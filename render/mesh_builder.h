@@ -29,6 +29,7 @@ public:
 
 private:
   uint32_t addVertex(glm::vec3 position, glm::vec3 normal, glm::vec2 uv);
+  void addGridTriangles(uint32_t first, uint32_t rowLength, int cellsAcross, int cellsDown, bool reverse);
 
   SceneMesh mesh_;
   float textureSize_;

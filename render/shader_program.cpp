@@ -13,6 +13,16 @@ namespace triwalk {
 
 namespace {
 
+// The info log of a shader or program (the two share the query shape).
+template <typename GetParameter, typename GetLog>
+std::string infoLog(GLuint object, GetParameter getParameter, GetLog getLog) {
+  GLint length = 0;
+  getParameter(object, GL_INFO_LOG_LENGTH, &length);
+  std::vector<char> log(size_t(std::max(length, 1)));
+  getLog(object, GLsizei(log.size()), nullptr, log.data());
+  return log.data();
+}
+
 GLuint compileShader(GLenum stage, std::string_view name) {
   const std::string source = expandedShaderSource(name);
   const GLuint shader = glCreateShader(stage);
@@ -22,12 +32,9 @@ GLuint compileShader(GLenum stage, std::string_view name) {
   GLint ok = 0;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (!ok) {
-    GLint length = 0;
-    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-    std::vector<char> log(size_t(std::max(length, 1)));
-    glGetShaderInfoLog(shader, GLsizei(log.size()), nullptr, log.data());
+    const std::string log = infoLog(shader, glGetShaderiv, glGetShaderInfoLog);
     glDeleteShader(shader);
-    throw GlUnavailable("shader " + std::string(name) + " does not compile: " + log.data());
+    throw GlUnavailable("shader " + std::string(name) + " does not compile: " + log);
   }
   return shader;
 }
@@ -71,12 +78,9 @@ ShaderProgram::ShaderProgram(std::string_view vertexShader, std::string_view fra
   GLint ok = 0;
   glGetProgramiv(program_, GL_LINK_STATUS, &ok);
   if (!ok) {
-    GLint length = 0;
-    glGetProgramiv(program_, GL_INFO_LOG_LENGTH, &length);
-    std::vector<char> log(size_t(std::max(length, 1)));
-    glGetProgramInfoLog(program_, GLsizei(log.size()), nullptr, log.data());
+    const std::string log = infoLog(program_, glGetProgramiv, glGetProgramInfoLog);
     glDeleteProgram(program_);
-    throw GlUnavailable("program " + name_ + " does not link: " + log.data());
+    throw GlUnavailable("program " + name_ + " does not link: " + log);
   }
 }
 

@@ -87,6 +87,18 @@ void writePanoramaExr(const std::filesystem::path& path, const Panorama& panoram
   TRIWALK_CHECK(panorama.distance.width == width && panorama.distance.height == height,
                 "color and distance sizes differ");
   const size_t pixelCount = size_t(width) * size_t(height);
+  // Refuse what the reader would reject (a shading bug upstream, or a colour
+  // beyond half's range) instead of leaving an unreadable view behind.
+  for (size_t i = 0; i < pixelCount; ++i) {
+    const glm::vec3& color = panorama.color.pixels[i];
+    const bool representable = std::isfinite(color.r) && std::isfinite(color.g) && std::isfinite(color.b) &&
+                               std::abs(color.r) <= HALF_MAX && std::abs(color.g) <= HALF_MAX &&
+                               std::abs(color.b) <= HALF_MAX;
+    if (!representable) {
+      throw InputError(path.string(), "not written: non-finite or out-of-range color at pixel " +
+                                          std::to_string(i % size_t(width)) + "," + std::to_string(i / size_t(width)));
+    }
+  }
   std::vector<half> channels[3];
   for (int c = 0; c < 3; ++c) {
     channels[c].resize(pixelCount);

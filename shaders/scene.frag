@@ -41,7 +41,10 @@ void main() {
   if (dot(faceNormal, relativePosition) > 0.0) faceNormal = -faceNormal;
 
   // Walls are seen from both sides: light the side facing the camera.
-  vec3 n = normalize(worldNormal);
+  // Imported meshes can carry zero or NaN normals (degenerate faces): use
+  // the face's own normal there rather than shade with NaN.
+  float normalLength = length(worldNormal);
+  vec3 n = normalLength > 1e-6 ? worldNormal / normalLength : faceNormal;
   if (dot(n, relativePosition) > 0.0) n = -n;
   vec3 toEye = normalize(-relativePosition);
 

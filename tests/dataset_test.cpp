@@ -118,6 +118,17 @@ TEST_CASE("OpenEXR panorama round trip is exact, including +inf distance") {
   CHECK(std::distance(std::filesystem::directory_iterator(directory.path()), {}) == 1);
 }
 
+TEST_CASE("a view whose colour half cannot hold is refused and nothing is written") {
+  TemporaryDirectory directory;
+  for (const float bad : {std::nanf(""), 1.0e6f}) {
+    Panorama panorama = syntheticPanorama(16, 8, 3);
+    panorama.color.pixels[5 * 16 + 3].g = bad;
+    requireInputError([&] { writePanoramaExr(directory / "view.exr", panorama); }, "view.exr",
+                      "out-of-range color at pixel 3,5");
+    CHECK(std::filesystem::is_empty(directory.path()));
+  }
+}
+
 TEST_CASE("data set round trip: manifest fields and views survive write and open") {
   TemporaryDirectory directory;
   const Manifest manifest = syntheticManifest(32, 5);

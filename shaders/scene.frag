@@ -37,7 +37,12 @@ void main() {
   if (alphaTest && albedo.a < 0.5) discard;
 
   // The exact plane of this triangle (flat, from screen derivatives).
-  vec3 faceNormal = normalize(cross(dFdx(relativePosition), dFdy(relativePosition)));
+  // Sliver triangles of imported meshes can give parallel derivatives (a
+  // zero cross product): treat such a fragment as a plane facing the eye.
+  vec3 toEye = normalize(-relativePosition);
+  vec3 faceCross = cross(dFdx(relativePosition), dFdy(relativePosition));
+  float faceCrossLength = length(faceCross);
+  vec3 faceNormal = faceCrossLength > 1e-12 ? faceCross / faceCrossLength : toEye;
   if (dot(faceNormal, relativePosition) > 0.0) faceNormal = -faceNormal;
 
   // Walls are seen from both sides: light the side facing the camera.
@@ -46,7 +51,6 @@ void main() {
   float normalLength = length(worldNormal);
   vec3 n = normalLength > 1e-6 ? worldNormal / normalLength : faceNormal;
   if (dot(n, relativePosition) > 0.0) n = -n;
-  vec3 toEye = normalize(-relativePosition);
 
   vec3 light;
   vec3 highlight = vec3(0.0);

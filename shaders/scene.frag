@@ -35,22 +35,18 @@ void main() {
   if (hasDiffuse) albedo *= texture(diffuseTexture, surfaceUv);
   if (useVertexColor) albedo *= vertexColor;
   if (alphaTest && albedo.a < 0.5) discard;
+  // llvmpipe interpolates garbage (NaN, inf) across zero-area triangles,
+  // which imported meshes have: such a fragment is no surface at all.
+  if (any(isnan(relativePosition)) || any(isinf(relativePosition))) discard;
 
   // The exact plane of this triangle (flat, from screen derivatives).
-  // Sliver triangles of imported meshes can give parallel derivatives (a
-  // zero cross product): treat such a fragment as a plane facing the eye.
-  vec3 toEye = normalize(-relativePosition);
-  vec3 faceCross = cross(dFdx(relativePosition), dFdy(relativePosition));
-  float faceCrossLength = length(faceCross);
-  vec3 faceNormal = faceCrossLength > 1e-12 ? faceCross / faceCrossLength : toEye;
+  vec3 faceNormal = normalize(cross(dFdx(relativePosition), dFdy(relativePosition)));
   if (dot(faceNormal, relativePosition) > 0.0) faceNormal = -faceNormal;
 
   // Walls are seen from both sides: light the side facing the camera.
-  // Imported meshes can carry zero or NaN normals (degenerate faces): use
-  // the face's own normal there rather than shade with NaN.
-  float normalLength = length(worldNormal);
-  vec3 n = normalLength > 1e-6 ? worldNormal / normalLength : faceNormal;
+  vec3 n = normalize(worldNormal);
   if (dot(n, relativePosition) > 0.0) n = -n;
+  vec3 toEye = normalize(-relativePosition);
 
   vec3 light;
   vec3 highlight = vec3(0.0);

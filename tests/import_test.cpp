@@ -60,6 +60,22 @@ TEST_CASE("inside a room of the house, every direction meets a surface; the auto
   CHECK(panorama.distance.at(64, 63) == doctest::Approx(1.6).epsilon(0.02));
 }
 
+TEST_CASE("zero-area triangles of the house leave no NaN in a capture") {
+  // From this position (sample 29 of the automatic area) llvmpipe
+  // rasterizes a few fragments of a zero-area triangle with NaN
+  // interpolated positions; they used to shade to NaN colours, which the
+  // EXR writer refuses.
+  REQUIRE(std::filesystem::exists(kHouse));
+  ImportReport report;
+  const Scene scene = importScene(kHouse, ImportOptions{}, report);
+  auto context = createHeadlessContext();
+  PanoramaCapturer capturer(scene, 1024);
+  const Panorama panorama = capturer.capture({4.25f + 2.0f / 14.0f * 14.0f, 0.75f + 4.5f / 29.0f, 1.6f});
+  size_t nonFinite = 0;
+  for (const glm::vec3& color : panorama.color.pixels) nonFinite += !std::isfinite(color.r + color.g + color.b);
+  CHECK(nonFinite == 0);
+}
+
 TEST_CASE("the Quake 3 level oacmpdm3 loads by name with its textures, lightmaps and spawn points") {
   REQUIRE_MESSAGE(std::filesystem::exists(kLevels), "install openarena-oacmp1 (scripts/install-deps.sh test)");
   ImportOptions options;

@@ -10,7 +10,7 @@ namespace triwalk {
 
 void drawRenderPanel(ViewerState& state) {
   ImGui::SetNextWindowPos(ImVec2(440, 270), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(380, 330), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(520, 330), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Render")) {
     ImGui::End();
     return;

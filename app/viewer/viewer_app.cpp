@@ -74,6 +74,15 @@ public:
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini beside the data
     ImGui::StyleColorsDark();
+    // F12 through a key callback, not ImGui::IsKeyPressed: ImGui 1.86 keeps
+    // only the key state per frame, so a tap shorter than a frame (often, at
+    // llvmpipe's 70 ms) would be lost. ImGui's backend chains to this one.
+    glfwSetWindowUserPointer(context_.window(), this);
+    glfwSetKeyCallback(context_.window(), [](GLFWwindow* window, int key, int, int action, int) {
+      if (key == GLFW_KEY_F12 && action == GLFW_PRESS) {
+        static_cast<Viewer*>(glfwGetWindowUserPointer(window))->state_.screenshotRequested = true;
+      }
+    });
     ImGui_ImplGlfw_InitForOpenGL(context_.window(), true);
     ImGui_ImplOpenGL3_Init("#version 450");
   }
@@ -123,7 +132,6 @@ public:
 private:
   void update(double seconds, int frame, bool scripted, bool finalFrame) {
     const ImGuiIO& io = ImGui::GetIO();
-    if (!io.WantCaptureKeyboard && ImGui::IsKeyPressed(GLFW_KEY_F12)) state_.screenshotRequested = true;
     if (scripted && !options_.path.empty()) {
       const CameraPose& pose = options_.path[size_t(frame) % options_.path.size()];
       state_.walk.position = pose.position;

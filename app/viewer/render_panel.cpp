@@ -15,7 +15,8 @@ void drawRenderPanel(ViewerState& state) {
     ImGui::End();
     return;
   }
-  ImGui::Text("%.1f fps, frame %.1f ms (%.2f M triangles)", state.framesPerSecond, state.frameMilliseconds,
+  ImGui::Text("%.1f fps, frame %.1f ms (%.2f M triangles)", state.smoothedFrameSeconds > 0.0 ? 1.0 / state.smoothedFrameSeconds : 0.0,
+              state.frameMilliseconds,
               double(state.frame.trianglesDrawn) / 1e6);
   const Dataset& dataset = *state.dataset;
   ImGui::Text("triangle %d, references", state.currentTriangle);

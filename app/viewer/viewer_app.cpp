@@ -123,7 +123,10 @@ public:
       if (state_.screenshotRequested || finalFrame) saveScreenshot(finalFrame);
       context_.swapBuffers();
       state_.frameMilliseconds = 1000.0 * std::chrono::duration<double>(std::chrono::steady_clock::now() - now).count();
-      state_.framesPerSecond = seconds > 0.0 ? 0.9 * state_.framesPerSecond + 0.1 / seconds : 0.0;
+      // Average the frame time, not its reciprocal: a few fast frames while
+      // panoramas load would otherwise inflate the fps for seconds.
+      state_.smoothedFrameSeconds =
+          state_.smoothedFrameSeconds > 0.0 ? 0.9 * state_.smoothedFrameSeconds + 0.1 * seconds : seconds;
       if (finalFrame) break;
     }
     return 0;

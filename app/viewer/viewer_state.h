@@ -45,8 +45,8 @@ struct ViewerState {
   GlImage reconstructionImage, truthImage, heatmapImage;
 
   // Statistics.
-  double framesPerSecond = 0.0;
-  double frameMilliseconds = 0.0;
+  double smoothedFrameSeconds = 0.0;  // between frames, moving average: fps = 1 / this
+  double frameMilliseconds = 0.0;     // this frame's own work
   PanoramaCache::Statistics cache;
   GpuFrameStatistics frame;
 

@@ -141,15 +141,16 @@ void registerEvalCommand(CLI::App& app) {
                   e.stdError, e.probeMeanError, e.probeStdError);
     }
     const MethodEvaluation& collapse = evaluations[2];
-    std::printf("\nprobe mean error of edge collapse (%.4f) against the baselines, and the probes where it is lower:\n",
+    std::printf("\nprobe mean error of edge collapse (%.4f) against the baselines: the change, +- one standard error of\n"
+                "the probe-by-probe differences, and the probes where edge collapse is lower:\n",
                 collapse.probeMeanError);
     for (size_t row : {size_t(1), size_t(3), size_t(4)}) {
       const MethodEvaluation& baseline = evaluations[row];
-      int lower = 0;
-      for (size_t p = 0; p < collapse.probeErrors.size(); ++p) lower += collapse.probeErrors[p] < baseline.probeErrors[p];
-      std::printf("  %-12s %.4f  edge collapse %+.1f%%, lower at %d of %zu probes\n", label(baseline.method),
-                  baseline.probeMeanError, 100.0 * (collapse.probeMeanError - baseline.probeMeanError) / baseline.probeMeanError,
-                  lower, collapse.probeErrors.size());
+      const PairedComparison paired = compareProbeErrors(collapse.probeErrors, baseline.probeErrors);
+      std::printf("  %-12s %.4f  edge collapse %+.1f%% +- %.1f%%, lower at %d of %zu probes\n", label(baseline.method),
+                  baseline.probeMeanError, 100.0 * paired.meanDifference / baseline.probeMeanError,
+                  100.0 * paired.standardError / baseline.probeMeanError, paired.candidateLower,
+                  collapse.probeErrors.size());
     }
 
     if (!a.counts.empty()) compareAtCounts(dataset, selection, a.counts, a.seed, errors);

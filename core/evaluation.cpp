@@ -1,5 +1,7 @@
 #include "core/evaluation.h"
 
+#include "core/errors.h"
+
 #include <tbb/parallel_for.h>
 
 #include <cmath>
@@ -13,6 +15,26 @@ void meanAndDeviation(const std::vector<double>& values, double& mean, double& d
   mean /= double(values.size());
   for (double v : values) deviation += (v - mean) * (v - mean);
   deviation = std::sqrt(deviation / double(values.size()));
+}
+
+PairedComparison compareProbeErrors(const std::vector<double>& candidate, const std::vector<double>& baseline) {
+  TRIWALK_CHECK(candidate.size() == baseline.size(), "paired comparison needs the same probes");
+  PairedComparison comparison;
+  const size_t n = candidate.size();
+  if (n == 0) return comparison;
+  for (size_t i = 0; i < n; ++i) {
+    comparison.meanDifference += candidate[i] - baseline[i];
+    comparison.candidateLower += candidate[i] < baseline[i];
+  }
+  comparison.meanDifference /= double(n);
+  if (n < 2) return comparison;
+  double sumOfSquares = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    const double deviation = candidate[i] - baseline[i] - comparison.meanDifference;
+    sumOfSquares += deviation * deviation;
+  }
+  comparison.standardError = std::sqrt(sumOfSquares / double(n - 1)) / std::sqrt(double(n));
+  return comparison;
 }
 
 MethodEvaluation evaluateMesh(const std::string& method, const ViewMesh& mesh, DatasetTriangleErrors& errors) {

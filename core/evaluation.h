@@ -29,4 +29,17 @@ MethodEvaluation evaluateMesh(const std::string& method, const ViewMesh& mesh, D
 // Mean and population standard deviation.
 void meanAndDeviation(const std::vector<double>& values, double& mean, double& deviation);
 
+// Probe by probe, a candidate against a baseline on the same probes: the
+// mean of the differences (candidate - baseline, negative = candidate
+// better), its standard error (sample deviation / sqrt(n)), and at how
+// many probes the candidate is lower. The probes are shared, so the paired
+// error is far smaller than the two means' spreads would suggest.
+struct PairedComparison {
+  double meanDifference = 0.0;
+  double standardError = 0.0;
+  int candidateLower = 0;
+};
+
+PairedComparison compareProbeErrors(const std::vector<double>& candidate, const std::vector<double>& baseline);
+
 }  // namespace triwalk

@@ -2,12 +2,14 @@
 
 #include "core/baselines.h"
 #include "core/dataset.h"
+#include "core/evaluation.h"
 #include "core/selection.h"
 #include "tests/analytic_scene.h"
 #include "tests/test_support.h"
 
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <set>
 
 namespace triwalk {
@@ -52,6 +54,20 @@ TEST_CASE("random: seeded, distinct, sorted") {
   CHECK(a != c);
   CHECK(std::set<int>(a.begin(), a.end()).size() == 10);
   CHECK(std::is_sorted(a.begin(), a.end()));
+}
+
+TEST_CASE("paired comparison of probe errors: mean difference, its standard error, probes lower") {
+  // Differences -1, 0, 1, 2: mean 0.5; sample deviation sqrt(5/3); standard
+  // error sqrt(5/3) / 2; the candidate is lower at the first probe only.
+  const PairedComparison paired = compareProbeErrors({1.0, 2.0, 3.0, 4.0}, {2.0, 2.0, 2.0, 2.0});
+  CHECK(paired.meanDifference == doctest::Approx(0.5));
+  CHECK(paired.standardError == doctest::Approx(std::sqrt(5.0 / 3.0) / 2.0));
+  CHECK(paired.candidateLower == 1);
+  // A constant offset is certain: no spread, no standard error.
+  const PairedComparison offset = compareProbeErrors({1.0, 2.0, 3.0}, {1.5, 2.5, 3.5});
+  CHECK(offset.meanDifference == doctest::Approx(-0.5));
+  CHECK(offset.standardError == doctest::Approx(0.0));
+  CHECK(offset.candidateLower == 3);
 }
 
 }  // namespace triwalk

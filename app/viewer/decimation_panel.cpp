@@ -32,7 +32,6 @@ void drawDecimationPanel(ViewerState& state) {
     ImGui::Text("current cost %.3f   next cost %.3f", currentCost, s.nextCost);
   }
 
-  ImGui::BeginDisabled(s.busy && !s.errorsReady);
   if (ImGui::Button("<< back N")) session.stepBack(state.stepCount);
   ImGui::SameLine();
   if (ImGui::Button("< back")) session.stepBack(1);
@@ -53,7 +52,6 @@ void drawDecimationPanel(ViewerState& state) {
   state.runSamples = std::max(3, state.runSamples);
   ImGui::SameLine();
   if (ImGui::Button("run to samples")) session.runToSamples(state.runSamples);
-  ImGui::EndDisabled();
   ImGui::SameLine();
   if (ImGui::Button("stop")) session.stop();
 
@@ -77,6 +75,10 @@ void drawDecimationPanel(ViewerState& state) {
     }
   }
   ImGui::TextWrapped("%s%s", s.busy ? "working: " : "", s.status.c_str());
+  if (!s.errorsReady) {
+    ImGui::TextWrapped("panoramas at the error width still loading: new collapses, triangle colours and the inspector "
+                       "follow when they are in");
+  }
   if (!state.message.empty()) ImGui::TextWrapped("%s", state.message.c_str());
   ImGui::End();
 }

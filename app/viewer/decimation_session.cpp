@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace triwalk {
 
@@ -23,12 +24,10 @@ DecimationSession::DecimationSession(const Dataset& dataset, const TriangleError
   } else {
     initial_ = ViewMesh::delaunay(samplePositions(dataset), {}, dataset.manifestPath().string()).triangles();
   }
-  publish("loading panoramas for the error at " + std::to_string(settings.width) + "x" + std::to_string(settings.width / 2));
+  publish("loading panoramas for the error at " + std::to_string(settings.width) + "x" + std::to_string(settings.width / 2) +
+          "; the log can be stepped meanwhile");
   thread_ = std::thread([this] { worker(); });
-  post([this] {
-    ensureErrors();
-    publish("ready");
-  });
+  loader_ = std::thread([this] { loadErrors(); });
 }
 
 DecimationSession::~DecimationSession() {
@@ -40,6 +39,24 @@ DecimationSession::~DecimationSession() {
   stopRun_ = true;
   wake_.notify_all();
   thread_.join();
+  loader_.join();
+}
+
+void DecimationSession::loadErrors() {
+  std::unique_ptr<DatasetTriangleErrors> loaded;
+  std::string failure;
+  try {
+    loaded = std::make_unique<DatasetTriangleErrors>(dataset_, settings_, true);
+  } catch (const std::exception& error) {
+    failure = error.what();
+  }
+  {
+    std::lock_guard lock(mutex_);
+    loadedErrors_ = std::move(loaded);
+    loadFailure_ = failure;
+    loadDone_ = true;
+  }
+  wake_.notify_all();
 }
 
 void DecimationSession::post(std::function<void()> task) {
@@ -56,10 +73,18 @@ void DecimationSession::worker() {
     std::function<void()> task;
     {
       std::unique_lock lock(mutex_);
-      wake_.wait(lock, [&] { return quit_ || !tasks_.empty(); });
+      wake_.wait(lock, [&] { return quit_ || !tasks_.empty() || (loadDone_ && !errorsAdopted_); });
       if (quit_) return;
-      task = std::move(tasks_.front());
-      tasks_.pop_front();
+      if (loadDone_ && !errorsAdopted_) {
+        // The panoramas just arrived: colour the map and say so.
+        task = [this] {
+          ensureErrors();
+          publish("ready");
+        };
+      } else {
+        task = std::move(tasks_.front());
+        tasks_.pop_front();
+      }
     }
     try {
       task();
@@ -74,7 +99,13 @@ void DecimationSession::worker() {
 
 void DecimationSession::ensureErrors() {
   if (errors_) return;
-  errors_ = std::make_unique<DatasetTriangleErrors>(dataset_, settings_, true);
+  std::unique_lock lock(mutex_);
+  wake_.wait(lock, [&] { return quit_ || loadDone_; });
+  if (!loadDone_) throw std::runtime_error("closing");
+  errorsAdopted_ = true;
+  if (!loadedErrors_) throw std::runtime_error(loadFailure_);
+  errors_ = std::move(loadedErrors_);
+  lock.unlock();
   cachedErrors_ = std::make_unique<CachingTriangleErrors>(*errors_);
 }
 

@@ -1,10 +1,12 @@
 #pragma once
 // The viewer's decimation: the dense triangulation, the collapse log and
 // the step the person is at. Stepping within the log replays it (instant,
-// forward and back); stepping past its end computes new collapses. All
-// work that needs panoramas (loading them at the error width, triangle
-// errors, collapses, the inspector's reconstruction) runs on one worker
-// thread, so the walkthrough never stalls; the UI reads snapshots.
+// forward and back); stepping past its end computes new collapses. Work
+// that needs panoramas (triangle errors, collapses, the inspector's
+// reconstruction) runs on one worker thread, so the walkthrough never
+// stalls; the UI reads snapshots. The panoramas at the error width load on
+// a thread of their own, so stepping through the log works at once while
+// they load; only the work that needs them waits.
 
 #include "core/dataset.h"
 #include "core/edge_collapse_decimator.h"
@@ -69,8 +71,9 @@ public:
 
 private:
   void worker();
+  void loadErrors();
   void post(std::function<void()> task);
-  // Worker thread only.
+  // Worker thread only. Waits for the loader.
   void ensureErrors();
   void ensureDecimator();
   bool forwardOne();
@@ -96,7 +99,13 @@ private:
   std::optional<Inspection> inspection_;
   std::atomic<bool> stopRun_{false};
   bool quit_ = false;
+  // Loader results, handed to the worker under mutex_.
+  std::unique_ptr<DatasetTriangleErrors> loadedErrors_;
+  std::string loadFailure_;
+  bool loadDone_ = false;
+  bool errorsAdopted_ = false;
   std::thread thread_;
+  std::thread loader_;
 };
 
 }  // namespace triwalk

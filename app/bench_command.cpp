@@ -22,7 +22,9 @@ void registerBenchCommand(CLI::App& app) {
   };
   auto arguments = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand("bench", "Measure throughput and print a table (machine, sizes, figures)");
-  command->add_option("--only", arguments->only, "Run only these groups: capture, decimate, warp, render, viewer")->delimiter(',');
+  command->add_option("--only", arguments->only, "Run only these groups: capture, decimate, warp, render, viewer")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"capture", "decimate", "warp", "render", "viewer"}));
   command->add_option("--gl", arguments->gl, "Headless OpenGL: auto, egl or osmesa")->capture_default_str();
   command->add_option("--capture-views", arguments->captureViews, "Panoramas rendered for the capture figure")
       ->capture_default_str()->check(CLI::PositiveNumber);

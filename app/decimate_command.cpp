@@ -42,6 +42,7 @@ void registerDecimateCommand(CLI::App& app) {
   command->callback([arguments] {
     const Arguments& a = *arguments;
     if (a.maxError <= 0.0 && a.target == 0) throw InputError("decimate", "give --max-error, --target or both");
+    if (a.target == 1 || a.target == 2) throw InputError("--target", "a triangle needs at least 3 samples");
     const Dataset dataset = Dataset::open(a.dataset);
     if (a.target > dataset.sampleCount()) {
       throw InputError("--target", std::to_string(a.target) + " is more than the " + std::to_string(dataset.sampleCount()) +
@@ -60,8 +61,8 @@ void registerDecimateCommand(CLI::App& app) {
     options.oneRingCandidates = a.oneRing;
     options.areaWeightedCost = !a.unweightedCost;
     const auto start = std::chrono::steady_clock::now();
-    ProgressReporter costing("cost edges", 0, a.quiet);
-    EdgeCollapseDecimator decimator(initial, errors, options);
+    ProgressReporter costing("cost every edge (triangle errors)", 0, a.quiet);
+    EdgeCollapseDecimator decimator(initial, errors, options, &costing);
     costing.finish();
     const double costingSeconds = costing.elapsedSeconds();
     const size_t expected = a.target > 0 ? size_t(initial.vertexCount() - a.target) : 0;

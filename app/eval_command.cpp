@@ -39,13 +39,27 @@ void writeHeatmaps(const std::filesystem::path& directory, const MethodEvaluatio
   }
 }
 
-// Probe error of edge collapse and the baselines at several sample counts:
-// the collapse log replayed to each count gives edge collapse's mesh.
-void compareAtCounts(const Dataset& dataset, const Selection& selection, const std::vector<int>& counts, unsigned seed,
-                     DatasetTriangleErrors& errors) {
+// --counts before any work: each count must be one the collapse log reaches.
+void checkCounts(const Dataset& dataset, const Selection& selection, const std::vector<int>& counts) {
+  if (counts.empty()) return;
   if (selection.initialTriangles.empty()) {
     throw InputError("--counts", "the selection has no collapse log to replay");
   }
+  const int initialCount = ViewMesh(samplePositions(dataset), selection.initialTriangles).vertexCount();
+  const int fewest = initialCount - int(selection.collapses.size());
+  for (int count : counts) {
+    if (count < fewest || count > initialCount) {
+      throw InputError("--counts", std::to_string(count) + " samples is outside what the collapse log reaches (" +
+                                       std::to_string(fewest) + " to " + std::to_string(initialCount) + ")");
+    }
+  }
+}
+
+// Probe error of edge collapse and the baselines at several sample counts
+// (checked by checkCounts): the collapse log replayed to each count gives
+// edge collapse's mesh.
+void compareAtCounts(const Dataset& dataset, const Selection& selection, const std::vector<int>& counts, unsigned seed,
+                     DatasetTriangleErrors& errors) {
   const std::vector<glm::dvec2> positions = samplePositions(dataset);
   const int initialCount = ViewMesh(positions, selection.initialTriangles).vertexCount();
   std::printf("\nprobe mean error by sample count (edge collapse replayed from its log)\n\n");
@@ -53,11 +67,6 @@ void compareAtCounts(const Dataset& dataset, const Selection& selection, const s
   double sums[4] = {0, 0, 0, 0};
   for (int count : counts) {
     const int steps = initialCount - count;
-    if (steps < 0 || steps > int(selection.collapses.size())) {
-      throw InputError("--counts", std::to_string(count) + " samples is outside what the collapse log reaches (" +
-                                       std::to_string(initialCount - int(selection.collapses.size())) + " to " +
-                                       std::to_string(initialCount) + ")");
-    }
     const ViewMesh meshes[4] = {
         ViewMesh(positions, replayForward(selection.initialTriangles, selection.collapses, size_t(steps))),
         ViewMesh::delaunay(positions, uniformSelection(dataset, count), "uniform baseline"),
@@ -104,6 +113,7 @@ void registerEvalCommand(CLI::App& app) {
     const Dataset dataset = Dataset::open(a.dataset);
     const Selection selection = readSelection(a.selection, dataset);
     if (dataset.probeCount() == 0) throw InputError(dataset.manifestPath().string(), "eval needs probes (capture --probes N)");
+    checkCounts(dataset, selection, a.counts);
     const TriangleErrorSettings settings = triangleErrorSettings(a.errors);
     InterruptScope interruptScope;
     DatasetTriangleErrors errors(dataset, settings, a.quiet);

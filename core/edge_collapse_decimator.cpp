@@ -44,7 +44,8 @@ const char* stopReasonName(StopReason reason) {
   return "?";
 }
 
-EdgeCollapseDecimator::EdgeCollapseDecimator(const ViewMesh& mesh, TriangleErrorSource& errors, DecimationOptions options)
+EdgeCollapseDecimator::EdgeCollapseDecimator(const ViewMesh& mesh, TriangleErrorSource& errors, DecimationOptions options,
+                                             ProgressReporter* costing)
     : positions_(mesh.positions()), triangles_(mesh.triangles()), alive_(mesh.triangles().size(), 1),
       incident_(mesh.positions().size()), isVertex_(mesh.positions().size(), 0), errors_(errors), options_(options) {
   for (size_t t = 0; t < triangles_.size(); ++t) {
@@ -59,7 +60,7 @@ EdgeCollapseDecimator::EdgeCollapseDecimator(const ViewMesh& mesh, TriangleError
       edges.insert({std::min(a, b), std::max(a, b)});
     }
   }
-  costEdges(std::vector<Edge>(edges.begin(), edges.end()));
+  costEdges(std::vector<Edge>(edges.begin(), edges.end()), costing);
 }
 
 int EdgeCollapseDecimator::triangleCount() const { return int(std::count(alive_.begin(), alive_.end(), char(1))); }
@@ -228,7 +229,7 @@ std::vector<std::pair<int, PlacementKind>> EdgeCollapseDecimator::candidates(int
 
 // --------------------------------------------------------------- costs --
 
-void EdgeCollapseDecimator::ensureErrors(const std::vector<Triangle>& triangles) {
+void EdgeCollapseDecimator::ensureErrors(const std::vector<Triangle>& triangles, ProgressReporter* progress) {
   std::vector<Triangle> missing;
   std::set<uint64_t> queued;
   for (const Triangle& t : triangles) {
@@ -241,7 +242,21 @@ void EdgeCollapseDecimator::ensureErrors(const std::vector<Triangle>& triangles)
   }
   if (missing.empty()) return;
   std::vector<double> computed(missing.size());
-  errors_.computeErrors(missing, computed);
+  if (progress) {
+    // In chunks, so that the first costing (thousands of errors) shows its
+    // progress and stops on Ctrl-C; each error is independent of the others.
+    constexpr size_t kChunk = 64;
+    progress->setTotal(missing.size());
+    for (size_t first = 0; first < missing.size(); first += kChunk) {
+      throwIfInterrupted();
+      const size_t count = std::min(kChunk, missing.size() - first);
+      errors_.computeErrors(std::span<const Triangle>(missing).subspan(first, count),
+                            std::span<double>(computed).subspan(first, count));
+      progress->advance(count);
+    }
+  } else {
+    errors_.computeErrors(missing, computed);
+  }
   for (size_t i = 0; i < missing.size(); ++i) cache_[tripleKey(missing[i])] = computed[i];
   statistics_.errorsComputed += missing.size();
 }
@@ -268,7 +283,7 @@ double EdgeCollapseDecimator::triangleError(const Triangle& triangle) {
 // Costs a batch of edges: every candidate collapse is simulated first, the
 // triangle errors they need are computed together (in parallel), then each
 // edge takes its cheapest valid candidate (ties: candidate order).
-void EdgeCollapseDecimator::costEdges(const std::vector<Edge>& edges) {
+void EdgeCollapseDecimator::costEdges(const std::vector<Edge>& edges, ProgressReporter* progress) {
   struct Candidate {
     size_t edge;
     Plan plan;
@@ -285,7 +300,7 @@ void EdgeCollapseDecimator::costEdges(const std::vector<Edge>& edges) {
       plans.push_back({i, std::move(plan)});
     }
   }
-  ensureErrors(needed);
+  ensureErrors(needed, progress);
   for (Candidate& candidate : plans) {
     EdgeState& state = states[candidate.edge];
     const double cost = meanError(candidate.plan.added);

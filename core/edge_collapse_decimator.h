@@ -77,7 +77,10 @@ struct DecimationStatistics {
 
 class EdgeCollapseDecimator {
 public:
-  EdgeCollapseDecimator(const ViewMesh& mesh, TriangleErrorSource& errors, DecimationOptions options);
+  // Costs every edge up front (the long part on a dense mesh): costing, if
+  // given, counts the triangle errors it computes; Ctrl-C throws Interrupted.
+  EdgeCollapseDecimator(const ViewMesh& mesh, TriangleErrorSource& errors, DecimationOptions options,
+                        ProgressReporter* costing = nullptr);
 
   // Performs the cheapest valid collapse unless a stop condition holds;
   // returns false and sets stopReason() when it stops.
@@ -133,8 +136,8 @@ private:
   bool onOpenSegment(int sample, int from, int to) const;
   bool simulate(int a, int b, int placement, PlacementKind kind, Plan& plan) const;
   std::vector<std::pair<int, PlacementKind>> candidates(int a, int b, EdgeState& state) const;
-  void costEdges(const std::vector<Edge>& edges);
-  void ensureErrors(const std::vector<Triangle>& triangles);
+  void costEdges(const std::vector<Edge>& edges, ProgressReporter* progress = nullptr);
+  void ensureErrors(const std::vector<Triangle>& triangles, ProgressReporter* progress = nullptr);
   double meanError(const std::vector<Triangle>& triangles);
   const HeapEntry* peekValid();
   void apply(const Edge& edge, const EdgeState& state);

@@ -38,6 +38,7 @@ public:
   void setTotal(size_t total);
   void finish();
   double elapsedSeconds() const;
+  size_t done() const { return done_; }
 
 private:
   void print(bool final);

@@ -3,10 +3,17 @@
 
 #include "core/edge_collapse_decimator.h"
 #include "core/atomic_file.h"
+#include "core/dataset.h"
 #include "core/errors.h"
+#include "core/progress.h"
+#include "core/selection.h"
+#include "core/triangle_error.h"
 #include "core/view_mesh.h"
+#include "tests/analytic_scene.h"
+#include "tests/test_support.h"
 
 #include <doctest/doctest.h>
+#include <tbb/global_control.h>
 
 #include <cmath>
 #include <fstream>
@@ -191,6 +198,23 @@ TEST_CASE("stale heap entries are skipped: each collapse is the cheapest a fresh
   CHECK(incremental.statistics().staleEntriesSkipped > 0);
 }
 
+TEST_CASE("the first costing of every edge counts its triangle errors and stops on Ctrl-C") {
+  const std::vector<glm::dvec2> positions = grid(12, 8);
+  const ViewMesh initial = ViewMesh::delaunay(positions, {}, "grid");
+  SyntheticErrors errors(positions);
+  ProgressReporter costing("cost every edge", 0, true);
+  EdgeCollapseDecimator decimator(initial, errors, DecimationOptions{}, &costing);
+  CHECK(errors.evaluations > 64);  // more than one chunk
+  CHECK(costing.done() == size_t(errors.evaluations));
+
+  SyntheticErrors untouched(positions);
+  ProgressReporter interrupted("cost every edge", 0, true);
+  requestInterrupt();
+  CHECK_THROWS_AS(EdgeCollapseDecimator(initial, untouched, DecimationOptions{}, &interrupted), Interrupted);
+  clearInterrupt();
+  CHECK(untouched.evaluations == 0);
+}
+
 TEST_CASE("edge cost: the area-weighted mean of the updated triangles' errors, or the paper's plain mean") {
   const std::vector<glm::dvec2> positions = grid(4, 3);
   const ViewMesh initial = ViewMesh::delaunay(positions, {}, "grid");
@@ -256,17 +280,6 @@ TEST_CASE("collinear and too few samples are refused with a clear error") {
   CHECK_THROWS_WITH_AS(ViewMesh::delaunay(two, {}, "manifest.json"), doctest::Contains("at least 3 samples"), InputError);
 }
 
-}  // namespace triwalk
-
-#include "core/dataset.h"
-#include "core/selection.h"
-#include "core/triangle_error.h"
-#include "tests/analytic_scene.h"
-#include "tests/test_support.h"
-
-#include <tbb/global_control.h>
-
-namespace triwalk {
 
 TEST_CASE("decimation of a captured data set gives the same selection with 1 and 2 threads") {
   testing::TemporaryDirectory directory;

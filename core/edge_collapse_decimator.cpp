@@ -466,8 +466,6 @@ StopReason EdgeCollapseDecimator::run(ProgressReporter* progress) {
   return stopReason_;
 }
 
-// For the time left: to the target count, or, under an error threshold,
-// the collapses until the cost reaches it at the pace of the last 32.
 size_t EdgeCollapseDecimator::expectedRemainingCollapses() const {
   const int floorCount = std::max(3, options_.targetSamples);
   size_t remaining = size_t(std::max(0, vertexCount_ - floorCount));

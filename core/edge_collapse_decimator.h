@@ -96,6 +96,9 @@ public:
   // Whether collapsing the edge (first, second) into placement is valid now.
   bool isValidCollapse(int first, int second, int placement) const;
   StopReason stopReason() const { return stopReason_; }
+  // For the time left: the collapses to the target count, or, under an
+  // error threshold, until the cost reaches it at the pace of the last 32.
+  size_t expectedRemainingCollapses() const;
   int vertexCount() const { return vertexCount_; }
   int triangleCount() const;
   ViewMesh mesh() const;
@@ -141,7 +144,6 @@ private:
   double meanError(const std::vector<Triangle>& triangles);
   const HeapEntry* peekValid();
   void apply(const Edge& edge, const EdgeState& state);
-  size_t expectedRemainingCollapses() const;
 
   std::vector<glm::dvec2> positions_;
   std::vector<Triangle> triangles_;

@@ -2,8 +2,11 @@
 
 #include "core/color.h"
 #include "core/png_io.h"
+#include "core/progress.h"
 
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
@@ -24,8 +27,7 @@ DecimationSession::DecimationSession(const Dataset& dataset, const TriangleError
   } else {
     initial_ = ViewMesh::delaunay(samplePositions(dataset), {}, dataset.manifestPath().string()).triangles();
   }
-  publish("loading panoramas for the error at " + std::to_string(settings.width) + "x" + std::to_string(settings.width / 2) +
-          "; the log can be stepped meanwhile");
+  publish("loading panoramas for the error at " + std::to_string(settings.width) + "x" + std::to_string(settings.width / 2));
   thread_ = std::thread([this] { worker(); });
   loader_ = std::thread([this] { loadErrors(); });
 }
@@ -174,6 +176,29 @@ void DecimationSession::stepBack(int count) {
   });
 }
 
+namespace {
+
+// "running to error 1.850: 120 collapses, 3.1/s, about 1:05 left". Only
+// computed collapses count for the rate: replaying the log is instant.
+std::string runStatus(const std::string& goal, int computed, std::chrono::steady_clock::time_point start,
+                      size_t remaining) {
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double rate = seconds > 0.0 ? computed / seconds : 0.0;
+  char text[160];
+  std::snprintf(text, sizeof text, "running to %s: %d collapses computed, %.1f/s", goal.c_str(), computed, rate);
+  std::string status = text;
+  if (rate > 0.0 && remaining > 0) status += ", about " + formatDuration(double(remaining) / rate) + " left";
+  return status;
+}
+
+std::string formatError(double error) {
+  char text[32];
+  std::snprintf(text, sizeof text, "error %.3f", error);
+  return text;
+}
+
+}  // namespace
+
 void DecimationSession::runToError(double maxError) {
   stopRun_ = false;
   post([this, maxError] {
@@ -181,17 +206,24 @@ void DecimationSession::runToError(double maxError) {
     options_.maxError = maxError;
     options_.targetSamples = 0;
     decimator_.reset();
-    int done = 0;
-    while (!stopRun_ && forwardOne()) {
-      if (step_ <= int(log_.size()) && log_[size_t(step_ - 1)].cost > maxError) {
+    auto start = std::chrono::steady_clock::now();
+    int computed = 0;
+    while (!stopRun_) {
+      const bool replay = step_ < int(log_.size());
+      if (!forwardOne()) break;
+      if (replay && log_[size_t(step_ - 1)].cost > maxError) {
         --step_;  // a replayed collapse above the threshold is not taken
         break;
       }
-      if (++done % 10 == 0) publish("running to error " + std::to_string(maxError));
+      if (replay) {
+        start = std::chrono::steady_clock::now();
+        continue;
+      }
+      if (++computed % 10 == 0) publish(runStatus(formatError(maxError), computed, start, decimator_->expectedRemainingCollapses()));
     }
     options_ = saved;
     decimator_.reset();
-    publish(stopRun_ ? "stopped" : "reached error " + std::to_string(maxError));
+    publish(stopRun_ ? "stopped" : "reached " + formatError(maxError));
   });
 }
 
@@ -202,11 +234,19 @@ void DecimationSession::runToSamples(int samples) {
     options_.maxError = 0.0;
     options_.targetSamples = samples;
     decimator_.reset();
-    int done = 0;
+    auto start = std::chrono::steady_clock::now();
+    int computed = 0;
     while (!stopRun_) {
       const int current = ViewMesh(samplePositions(dataset_), replayForward(initial_, log_, size_t(step_))).vertexCount();
+      const bool replay = step_ < int(log_.size());
       if (current <= samples || !forwardOne()) break;
-      if (++done % 10 == 0) publish("running to " + std::to_string(samples) + " samples");
+      if (replay) {
+        start = std::chrono::steady_clock::now();
+        continue;
+      }
+      if (++computed % 10 == 0) {
+        publish(runStatus(std::to_string(samples) + " samples", computed, start, size_t(std::max(0, current - 1 - samples))));
+      }
     }
     options_ = saved;
     decimator_.reset();

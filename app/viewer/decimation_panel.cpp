@@ -1,6 +1,7 @@
 // Decimation: step one or N collapses, forward and back, run to an error
 // threshold or a sample count, see the cost of each step, save.
 
+#include "app/viewer/panel_window.h"
 #include "app/viewer/viewer_state.h"
 #include "core/errors.h"
 
@@ -12,12 +13,7 @@
 namespace triwalk {
 
 void drawDecimationPanel(ViewerState& state) {
-  ImGui::SetNextWindowPos(ImVec2(10, 320), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(420, 330), ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("Decimation")) {
-    ImGui::End();
-    return;
-  }
+  if (!beginPanelWindow("Decimation", ImVec2(10, 320), ImVec2(420, 330))) return;
   const DecimationSession::Snapshot& s = state.snapshot;
   DecimationSession& session = *state.session;
   ImGui::Text("samples %d   triangles %zu   step %d of %d logged", s.samples, s.triangles.size(), s.step, s.logSize);

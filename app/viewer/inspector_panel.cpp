@@ -2,6 +2,7 @@
 // destination near its centroid, the ground truth there and the per-pixel
 // error, with R, B and E.
 
+#include "app/viewer/panel_window.h"
 #include "app/viewer/viewer_state.h"
 
 #include <imgui.h>
@@ -9,12 +10,7 @@
 namespace triwalk {
 
 void drawInspectorPanel(ViewerState& state) {
-  ImGui::SetNextWindowPos(ImVec2(440, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(560, 250), ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("Inspector")) {
-    ImGui::End();
-    return;
-  }
+  if (!beginPanelWindow("Inspector", ImVec2(440, 10), ImVec2(560, 250))) return;
   if (state.selectedTriangle < 0) {
     ImGui::TextWrapped("Click a triangle on the map to see how its three panoramas reconstruct the view near its centroid.");
     ImGui::End();

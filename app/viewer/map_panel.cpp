@@ -2,6 +2,7 @@
 // error (with a legend), the person and where they look, the triangle they
 // stand in; a click selects a triangle for the inspector.
 
+#include "app/viewer/panel_window.h"
 #include "app/viewer/viewer_state.h"
 #include "core/color.h"
 
@@ -23,12 +24,7 @@ ImU32 toImColor(glm::vec3 color, float alpha = 1.0f) {
 }  // namespace
 
 void drawMapPanel(ViewerState& state) {
-  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(420, 300), ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("Map")) {
-    ImGui::End();
-    return;
-  }
+  if (!beginPanelWindow("Map", ImVec2(10, 10), ImVec2(420, 300))) return;
   const Dataset& dataset = *state.dataset;
   glm::vec2 lower(1e30f), upper(-1e30f);
   for (int i = 0; i < dataset.sampleCount(); ++i) {

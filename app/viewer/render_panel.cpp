@@ -2,6 +2,7 @@
 // stretch test, hole display, which reference made each pixel; frame rate
 // and the working set.
 
+#include "app/viewer/panel_window.h"
 #include "app/viewer/viewer_state.h"
 
 #include <imgui.h>
@@ -9,12 +10,7 @@
 namespace triwalk {
 
 void drawRenderPanel(ViewerState& state) {
-  ImGui::SetNextWindowPos(ImVec2(440, 270), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(520, 330), ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("Render")) {
-    ImGui::End();
-    return;
-  }
+  if (!beginPanelWindow("Render", ImVec2(440, 270), ImVec2(520, 330))) return;
   ImGui::Text("%.1f fps, frame %.1f ms (%.2f M triangles)", state.smoothedFrameSeconds > 0.0 ? 1.0 / state.smoothedFrameSeconds : 0.0,
               state.frameMilliseconds,
               double(state.frame.trianglesDrawn) / 1e6);

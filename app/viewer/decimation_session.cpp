@@ -27,6 +27,7 @@ DecimationSession::DecimationSession(const Dataset& dataset, const TriangleError
   } else {
     initial_ = ViewMesh::delaunay(samplePositions(dataset), {}, dataset.manifestPath().string()).triangles();
   }
+  initialSamples_ = ViewMesh(samplePositions(dataset), initial_).vertexCount();
   publish("loading panoramas for the error at " + std::to_string(settings.width) + "x" + std::to_string(settings.width / 2));
   thread_ = std::thread([this] { worker(); });
   loader_ = std::thread([this] { loadErrors(); });
@@ -146,7 +147,7 @@ void DecimationSession::publish(const std::string& status) {
   for (const Collapse& collapse : log_) next.costs.push_back(collapse.cost);
   next.step = step_;
   next.logSize = int(log_.size());
-  next.samples = int(ViewMesh(samplePositions(dataset_), next.triangles).vertexCount());
+  next.samples = initialSamples_ - step_;
   next.errorsReady = errors_ != nullptr;
   if (decimator_ && decimatorStep_ == step_ && step_ == int(log_.size())) next.nextCost = decimator_->nextCost();
   next.status = status;
@@ -200,57 +201,40 @@ std::string formatError(double error) {
 }  // namespace
 
 void DecimationSession::runToError(double maxError) {
-  stopRun_ = false;
-  post([this, maxError] {
-    DecimationOptions saved = options_;
-    options_.maxError = maxError;
-    options_.targetSamples = 0;
-    decimator_.reset();
-    auto start = std::chrono::steady_clock::now();
-    int computed = 0;
-    while (!stopRun_) {
-      const bool replay = step_ < int(log_.size());
-      if (!forwardOne()) break;
-      if (replay && log_[size_t(step_ - 1)].cost > maxError) {
-        --step_;  // a replayed collapse above the threshold is not taken
-        break;
-      }
-      if (replay) {
-        start = std::chrono::steady_clock::now();
-        continue;
-      }
-      if (++computed % 10 == 0) publish(runStatus(formatError(maxError), computed, start, decimator_->expectedRemainingCollapses()));
-    }
-    options_ = saved;
-    decimator_.reset();
-    publish(stopRun_ ? "stopped" : "reached " + formatError(maxError));
-  });
+  runForward(maxError, 0, formatError(maxError), [this, maxError] { return log_[size_t(step_)].cost > maxError; });
 }
 
 void DecimationSession::runToSamples(int samples) {
+  runForward(0.0, samples, std::to_string(samples) + " samples",
+             [this, samples] { return initialSamples_ - step_ <= samples; });
+}
+
+// Replays the log while it lasts and the next logged collapse is not past
+// the goal, then computes new collapses with the decimator held to the
+// goal's limits.
+void DecimationSession::runForward(double maxError, int targetSamples, const std::string& goal,
+                                   std::function<bool()> nextLoggedIsPastGoal) {
   stopRun_ = false;
-  post([this, samples] {
-    DecimationOptions saved = options_;
-    options_.maxError = 0.0;
-    options_.targetSamples = samples;
+  post([this, maxError, targetSamples, goal, nextLoggedIsPastGoal] {
+    const DecimationOptions saved = options_;
+    options_.maxError = maxError;
+    options_.targetSamples = targetSamples;
     decimator_.reset();
     auto start = std::chrono::steady_clock::now();
     int computed = 0;
     while (!stopRun_) {
-      const int current = ViewMesh(samplePositions(dataset_), replayForward(initial_, log_, size_t(step_))).vertexCount();
       const bool replay = step_ < int(log_.size());
-      if (current <= samples || !forwardOne()) break;
+      if (replay && nextLoggedIsPastGoal()) break;
+      if (!forwardOne()) break;
       if (replay) {
         start = std::chrono::steady_clock::now();
         continue;
       }
-      if (++computed % 10 == 0) {
-        publish(runStatus(std::to_string(samples) + " samples", computed, start, size_t(std::max(0, current - 1 - samples))));
-      }
+      if (++computed % 10 == 0) publish(runStatus(goal, computed, start, decimator_->expectedRemainingCollapses()));
     }
     options_ = saved;
     decimator_.reset();
-    publish(stopRun_ ? "stopped" : "reached " + std::to_string(samples) + " samples");
+    publish(stopRun_ ? "stopped" : "reached " + goal);
   });
 }
 

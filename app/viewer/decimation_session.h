@@ -73,6 +73,7 @@ private:
   void worker();
   void loadErrors();
   void post(std::function<void()> task);
+  void runForward(double maxError, int targetSamples, const std::string& goal, std::function<bool()> nextLoggedIsPastGoal);
   // Worker thread only. Waits for the loader.
   void ensureErrors();
   void ensureDecimator();
@@ -83,6 +84,7 @@ private:
   TriangleErrorSettings settings_;
   DecimationOptions options_;
   std::vector<Triangle> initial_;
+  int initialSamples_ = 0;  // each collapse removes one
 
   // Worker state.
   std::vector<Collapse> log_;

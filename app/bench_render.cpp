@@ -2,20 +2,10 @@
 #include "core/camera_path.h"
 #include "render/gpu_warper.h"
 
-#include <algorithm>
 #include <memory>
 #include <numeric>
 
 namespace triwalk {
-
-namespace {
-
-double percentile(std::vector<double> values, double fraction) {
-  std::sort(values.begin(), values.end());
-  return values[std::min(values.size() - 1, size_t(fraction * double(values.size())))];
-}
-
-}  // namespace
 
 void benchRender(BenchTable& table, const BenchViews& views, int frames) {
   std::vector<std::unique_ptr<GpuPanorama>> panoramas;
@@ -49,7 +39,7 @@ void benchRender(BenchTable& table, const BenchViews& views, int frames) {
   }
   const std::string size = "1280x720, 60 deg vertical, 3 references 1024x512, " + std::to_string(frames) + " frames of a turn";
   table.add({"GPU warp frame time, median / p95", size,
-             formatNumber(percentile(milliseconds, 0.5), 1) + " / " + formatNumber(percentile(milliseconds, 0.95), 1) + " ms",
+             formatMedianAndP95(milliseconds),
              formatNumber(double(triangles) / double(frames) / 1e6, 2) + " M triangles a frame after culling " +
                  formatNumber(100.0 * double(culledTiles) / double(drawnTiles + culledTiles), 0) + "% of the tiles"});
 

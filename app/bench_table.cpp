@@ -1,5 +1,6 @@
 #include "app/bench_table.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <thread>
@@ -47,6 +48,12 @@ std::string formatNumber(double value, int decimals) {
   char text[64];
   std::snprintf(text, sizeof text, "%.*f", decimals, value);
   return text;
+}
+
+std::string formatMedianAndP95(std::vector<double> milliseconds) {
+  std::sort(milliseconds.begin(), milliseconds.end());
+  const size_t n = milliseconds.size();
+  return formatNumber(milliseconds[n / 2], 1) + " / " + formatNumber(milliseconds[std::min(n - 1, n * 95 / 100)], 1) + " ms";
 }
 
 }  // namespace triwalk

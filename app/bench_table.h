@@ -26,5 +26,7 @@ private:
 
 std::string machineDescription();
 std::string formatNumber(double value, int decimals);
+// "median / p95 ms" of frame times: the values at ranks n/2 and n*95/100.
+std::string formatMedianAndP95(std::vector<double> milliseconds);
 
 }  // namespace triwalk

@@ -39,14 +39,12 @@ void benchViewer(BenchTable& table, const Dataset& dataset, const std::string& s
     // The walk advances at 30 frames a second at most, as a display would.
     if (elapsed < 1.0 / 30.0) std::this_thread::sleep_for(std::chrono::duration<double>(1.0 / 30.0 - elapsed));
   }
-  std::vector<double> sorted = milliseconds;
-  std::sort(sorted.begin(), sorted.end());
   const PanoramaCache::Statistics statistics = cache.statistics();
   table.add({"viewer frame time walking, median / p95",
              "1280x720, " + std::to_string(frames) + " frames over " + formatNumber(length, 1) + " m, " +
                  std::to_string(mesh.vertexCount()) + " references of " + std::to_string(dataset.manifest().width) + "x" +
                  std::to_string(dataset.manifest().height),
-             formatNumber(sorted[sorted.size() / 2], 1) + " / " + formatNumber(sorted[sorted.size() * 95 / 100], 1) + " ms",
+             formatMedianAndP95(milliseconds),
              "frames never wait for the disk: " + std::to_string(incomplete) + " of them drawn with a reference still loading "
                  "(the first ones, and where the walk outran the loader); working set " + std::to_string(statistics.misses) +
                  " misses, " + std::to_string(statistics.hits) + " hits"});

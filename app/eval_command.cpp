@@ -46,7 +46,7 @@ void checkCounts(const Dataset& dataset, const Selection& selection, const std::
     throw InputError("--counts", "the selection has no collapse log to replay");
   }
   const int initialCount = ViewMesh(samplePositions(dataset), selection.initialTriangles).vertexCount();
-  const int fewest = initialCount - int(selection.collapses.size());
+  const int fewest = samplesAfter(initialCount, selection.collapses, selection.collapses.size());
   for (int count : counts) {
     if (count < fewest || count > initialCount) {
       throw InputError("--counts", std::to_string(count) + " samples is outside what the collapse log reaches (" +
@@ -57,7 +57,7 @@ void checkCounts(const Dataset& dataset, const Selection& selection, const std::
 
 // Probe error of edge collapse and the baselines at several sample counts
 // (checked by checkCounts): the collapse log replayed to each count gives
-// edge collapse's mesh.
+// edge collapse's mesh (with the refinement at the final count).
 void compareAtCounts(const Dataset& dataset, const Selection& selection, const std::vector<int>& counts, unsigned seed,
                      DatasetTriangleErrors& errors) {
   const std::vector<glm::dvec2> positions = samplePositions(dataset);
@@ -66,9 +66,9 @@ void compareAtCounts(const Dataset& dataset, const Selection& selection, const s
   std::printf("| samples | edge collapse | uniform | k-medoids | random |\n|---|---|---|---|---|\n");
   double sums[4] = {0, 0, 0, 0};
   for (int count : counts) {
-    const int steps = initialCount - count;
+    const size_t steps = *lastStepWithSamples(initialCount, selection.collapses, count);
     const ViewMesh meshes[4] = {
-        ViewMesh(positions, replayForward(selection.initialTriangles, selection.collapses, size_t(steps))),
+        ViewMesh(positions, replayForward(selection.initialTriangles, selection.collapses, steps)),
         ViewMesh::delaunay(positions, uniformSelection(dataset, count), "uniform baseline"),
         ViewMesh::delaunay(positions, kMedoidsSelection(positions, count), "k-medoids baseline"),
         ViewMesh::delaunay(positions, randomSelection(dataset.sampleCount(), count, seed), "random baseline")};

@@ -29,6 +29,7 @@ const char* placementName(PlacementKind kind) {
     case PlacementKind::Second: return "second";
     case PlacementKind::Midpoint: return "midpoint";
     case PlacementKind::OneRing: return "one-ring";
+    case PlacementKind::Relocation: return "relocation";
   }
   return "?";
 }
@@ -509,6 +510,21 @@ std::vector<Triangle> replayBackward(std::vector<Triangle> final, std::span<cons
     final = replace(std::move(final), collapse.added, collapse.removed);
   }
   return final;
+}
+
+int samplesAfter(int initialSamples, std::span<const Collapse> log, size_t steps) {
+  const auto end = log.begin() + ptrdiff_t(std::min(steps, log.size()));
+  return initialSamples - int(std::count_if(log.begin(), end, [](const Collapse& c) { return c.kind != PlacementKind::Relocation; }));
+}
+
+std::optional<size_t> lastStepWithSamples(int initialSamples, std::span<const Collapse> log, int samples) {
+  std::optional<size_t> last;
+  int count = initialSamples;
+  for (size_t step = 0; step <= log.size(); ++step) {
+    if (step > 0 && log[step - 1].kind != PlacementKind::Relocation) --count;
+    if (count == samples) last = step;
+  }
+  return last;
 }
 
 }  // namespace triwalk

@@ -43,11 +43,14 @@ namespace triwalk {
 
 class ProgressReporter;
 
-enum class PlacementKind { First, Second, Midpoint, OneRing };
+// Relocation is not a collapse: the refinement after decimation
+// (core/selection_refinement.h) moved sample `first` to `placement`; the
+// sample count stays and `second` is -1.
+enum class PlacementKind { First, Second, Midpoint, OneRing, Relocation };
 const char* placementName(PlacementKind kind);
 
-// One logged collapse: replaying removed -> added (forward) or added ->
-// removed (backward) moves between consecutive meshes.
+// One logged collapse (or relocation): replaying removed -> added (forward)
+// or added -> removed (backward) moves between consecutive meshes.
 struct Collapse {
   int first = -1, second = -1;  // the edge (sample indices)
   int placement = -1;           // the sample that replaces them
@@ -167,5 +170,13 @@ private:
 // final ones (steps counted from the end, backward).
 std::vector<Triangle> replayForward(std::vector<Triangle> initial, std::span<const Collapse> log, size_t steps);
 std::vector<Triangle> replayBackward(std::vector<Triangle> final, std::span<const Collapse> log, size_t steps);
+
+// Samples left after the first `steps` entries of a log (relocations keep
+// the count).
+int samplesAfter(int initialSamples, std::span<const Collapse> log, size_t steps);
+// The last step of the log at which `samples` samples are left (so the
+// refinement is included at the final count), or nothing if the log never
+// has that many.
+std::optional<size_t> lastStepWithSamples(int initialSamples, std::span<const Collapse> log, int samples);
 
 }  // namespace triwalk

@@ -14,7 +14,8 @@ namespace {
 const std::map<std::string, PlacementKind> kPlacementKinds = {{"first", PlacementKind::First},
                                                              {"second", PlacementKind::Second},
                                                              {"midpoint", PlacementKind::Midpoint},
-                                                             {"one-ring", PlacementKind::OneRing}};
+                                                             {"one-ring", PlacementKind::OneRing},
+                                                             {"relocation", PlacementKind::Relocation}};
 
 nlohmann::json trianglesToJson(const std::vector<Triangle>& triangles, const Dataset& dataset) {
   nlohmann::json array = nlohmann::json::array();
@@ -70,13 +71,14 @@ void writeSelection(const std::filesystem::path& path, const Selection& selectio
   for (int s : selection.samples) samples.push_back(dataset.sample(s).id);
   nlohmann::json collapses = nlohmann::json::array();
   for (const Collapse& c : selection.collapses) {
-    collapses.push_back({{"first", dataset.sample(c.first).id},
-                         {"second", dataset.sample(c.second).id},
-                         {"placement", dataset.sample(c.placement).id},
-                         {"kind", placementName(c.kind)},
-                         {"cost", c.cost},
-                         {"removed", trianglesToJson(c.removed, dataset)},
-                         {"added", trianglesToJson(c.added, dataset)}});
+    nlohmann::json entry = {{"first", dataset.sample(c.first).id},
+                            {"placement", dataset.sample(c.placement).id},
+                            {"kind", placementName(c.kind)},
+                            {"cost", c.cost},
+                            {"removed", trianglesToJson(c.removed, dataset)},
+                            {"added", trianglesToJson(c.added, dataset)}};
+    if (c.kind != PlacementKind::Relocation) entry["second"] = dataset.sample(c.second).id;
+    collapses.push_back(std::move(entry));
   }
   nlohmann::json document = {{"format", "triwalk-selection"},
                              {"version", kSelectionFormatVersion},
@@ -132,12 +134,12 @@ Selection readSelection(const std::filesystem::path& path, const Dataset& datase
       const JsonObject entry = root.element("collapses", i);
       Collapse c;
       const std::string where = entry.where("");
-      c.first = reader.sample(entry.json().at("first"), where + "first");
-      c.second = reader.sample(entry.json().at("second"), where + "second");
-      c.placement = reader.sample(entry.json().at("placement"), where + "placement");
       const auto kind = kPlacementKinds.find(entry.string("kind"));
       if (kind == kPlacementKinds.end()) entry.fail("unknown placement kind '" + entry.string("kind") + "'");
       c.kind = kind->second;
+      c.first = reader.sample(entry.json().at("first"), where + "first");
+      if (c.kind != PlacementKind::Relocation) c.second = reader.sample(entry.json().at("second"), where + "second");
+      c.placement = reader.sample(entry.json().at("placement"), where + "placement");
       c.cost = entry.number("cost");
       c.removed = reader.triangles(entry, "removed");
       c.added = reader.triangles(entry, "added");

@@ -157,6 +157,14 @@ void DatasetTriangleErrors::computeErrors(std::span<const Triangle> triangles, s
   });
 }
 
+void DatasetTriangleErrors::computeReconstructionErrors(std::span<const SampleReconstruction> requests,
+                                                        std::span<double> errors) {
+  tbb::parallel_for(size_t(0), requests.size(), [&](size_t i) {
+    errors[i] = sampleError(requests[i].references, requests[i].destination);
+    ++evaluations_;
+  });
+}
+
 }  // namespace triwalk
 
 namespace triwalk {

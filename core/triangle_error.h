@@ -33,6 +33,21 @@ public:
   virtual void computeErrors(std::span<const Triangle> triangles, std::span<double> errors) = 0;
 };
 
+// E of reconstructing a dense sample from a triangle's three samples: the
+// data set (DatasetTriangleErrors) or synthetic errors in unit tests.
+struct SampleReconstruction {
+  Triangle references;  // sorted sample indices
+  int destination = -1;
+  auto operator<=>(const SampleReconstruction&) const = default;
+};
+
+class ReconstructionErrorSource {
+public:
+  virtual ~ReconstructionErrorSource() = default;
+  // E of each request, in order; may run in parallel.
+  virtual void computeReconstructionErrors(std::span<const SampleReconstruction> requests, std::span<double> errors) = 0;
+};
+
 // Centroid: the paper's. Quadrature: also the three sub-triangle
 // centroids. Interior: the dense samples inside the triangle, up to
 // kMaxInteriorDestinations spread by farthest-point picking (the centroid
@@ -51,13 +66,14 @@ struct TriangleErrorSettings {
   ErrorOptions error;
 };
 
-class DatasetTriangleErrors final : public TriangleErrorSource {
+class DatasetTriangleErrors final : public TriangleErrorSource, public ReconstructionErrorSource {
 public:
   // Loads every sample (and probe) at the settings' width, in parallel,
   // with progress; throws InputError for bad files.
   DatasetTriangleErrors(const Dataset& dataset, const TriangleErrorSettings& settings, bool quiet);
 
   void computeErrors(std::span<const Triangle> triangles, std::span<double> errors) override;
+  void computeReconstructionErrors(std::span<const SampleReconstruction> requests, std::span<double> errors) override;
 
   // The destination samples of a triangle with their weights (summing to
   // 1): for each point (centroid, sub-triangle centroids), the nearest

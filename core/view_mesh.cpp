@@ -32,15 +32,23 @@ ViewMesh::ViewMesh(std::vector<glm::dvec2> positions, std::vector<Triangle> tria
 }
 
 ViewMesh ViewMesh::delaunay(std::vector<glm::dvec2> positions, std::span<const int> samples, const std::string& subject) {
+  const size_t chosen = samples.empty() ? positions.size() : samples.size();
+  if (chosen < 3) throw InputError(subject, "at least 3 samples are needed to triangulate, got " + std::to_string(chosen));
+  std::optional<ViewMesh> mesh = tryDelaunay(std::move(positions), samples);
+  if (!mesh) throw InputError(subject, "the sample positions are collinear: they do not span an area to triangulate");
+  return std::move(*mesh);
+}
+
+std::optional<ViewMesh> ViewMesh::tryDelaunay(std::vector<glm::dvec2> positions, std::span<const int> samples) {
   std::vector<int> chosen(samples.begin(), samples.end());
   if (chosen.empty()) {
     for (size_t i = 0; i < positions.size(); ++i) chosen.push_back(int(i));
   }
-  if (chosen.size() < 3) throw InputError(subject, "at least 3 samples are needed to triangulate, got " + std::to_string(chosen.size()));
+  if (chosen.size() < 3) return std::nullopt;
   std::vector<glm::dvec2> subset;
   for (int sample : chosen) subset.push_back(positions[size_t(sample)]);
   std::vector<Triangle> triangles = delaunayTriangles(subset);
-  if (triangles.empty()) throw InputError(subject, "the sample positions are collinear: they do not span an area to triangulate");
+  if (triangles.empty()) return std::nullopt;
   for (Triangle& triangle : triangles) {
     for (int& vertex : triangle) vertex = chosen[size_t(vertex)];
     triangle = canonicalTriangle(triangle);

@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -25,6 +26,8 @@ public:
   // The Delaunay triangulation of the given samples (all when empty).
   // Throws InputError naming subject if they are collinear or fewer than 3.
   static ViewMesh delaunay(std::vector<glm::dvec2> positions, std::span<const int> samples, const std::string& subject);
+  // The same, or nothing when the samples are fewer than 3 or collinear.
+  static std::optional<ViewMesh> tryDelaunay(std::vector<glm::dvec2> positions, std::span<const int> samples);
 
   const std::vector<Triangle>& triangles() const { return triangles_; }
   const std::vector<int>& vertices() const { return vertices_; }  // sorted sample indices

@@ -147,7 +147,7 @@ void DecimationSession::publish(const std::string& status) {
   for (const Collapse& collapse : log_) next.costs.push_back(collapse.cost);
   next.step = step_;
   next.logSize = int(log_.size());
-  next.samples = initialSamples_ - step_;
+  next.samples = samplesAfter(initialSamples_, log_, size_t(step_));
   next.errorsReady = errors_ != nullptr;
   if (decimator_ && decimatorStep_ == step_ && step_ == int(log_.size())) next.nextCost = decimator_->nextCost();
   next.status = status;
@@ -201,12 +201,20 @@ std::string formatError(double error) {
 }  // namespace
 
 void DecimationSession::runToError(double maxError) {
-  runForward(maxError, 0, formatError(maxError), [this, maxError] { return log_[size_t(step_)].cost > maxError; });
+  // Relocations (the refinement after decimation) never pass an error goal:
+  // their cost is a mean over dense samples, not a collapse's.
+  runForward(maxError, 0, formatError(maxError), [this, maxError] {
+    const Collapse& next = log_[size_t(step_)];
+    return next.kind != PlacementKind::Relocation && next.cost > maxError;
+  });
 }
 
 void DecimationSession::runToSamples(int samples) {
   runForward(0.0, samples, std::to_string(samples) + " samples",
-             [this, samples] { return initialSamples_ - step_ <= samples; });
+             [this, samples] {
+               return log_[size_t(step_)].kind != PlacementKind::Relocation &&
+                      samplesAfter(initialSamples_, log_, size_t(step_)) <= samples;
+             });
 }
 
 // Replays the log while it lasts and the next logged collapse is not past

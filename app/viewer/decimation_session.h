@@ -84,7 +84,7 @@ private:
   TriangleErrorSettings settings_;
   DecimationOptions options_;
   std::vector<Triangle> initial_;
-  int initialSamples_ = 0;  // each collapse removes one
+  int initialSamples_ = 0;  // each collapse removes one; relocations keep the count
 
   // Worker state.
   std::vector<Collapse> log_;

@@ -1,0 +1,225 @@
+// The refinement after decimation: references move to nearby free samples
+// while that lowers the mean error over the dense samples, on tiny grids
+// with errors whose best answer is known, and on a captured data set.
+
+#include "core/selection_refinement.h"
+#include "core/atomic_file.h"
+#include "core/dataset.h"
+#include "core/errors.h"
+#include "core/progress.h"
+#include "core/selection.h"
+#include "core/view_mesh.h"
+#include "tests/analytic_scene.h"
+#include "tests/test_support.h"
+
+#include <doctest/doctest.h>
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <functional>
+
+namespace triwalk {
+
+namespace {
+
+// Errors from a formula of the destination and the three references.
+class FormulaErrors final : public ReconstructionErrorSource {
+public:
+  using Formula = std::function<double(const Triangle& references, int destination)>;
+  explicit FormulaErrors(Formula formula) : formula_(std::move(formula)) {}
+  void computeReconstructionErrors(std::span<const SampleReconstruction> requests, std::span<double> errors) override {
+    for (size_t i = 0; i < requests.size(); ++i) errors[i] = formula_(requests[i].references, requests[i].destination);
+    computed += int(requests.size());
+  }
+  int computed = 0;
+
+private:
+  Formula formula_;
+};
+
+// Sample x * rows + y at (x, y), 1 m apart.
+std::vector<glm::dvec2> grid(int columns, int rows) {
+  std::vector<glm::dvec2> points;
+  for (int x = 0; x < columns; ++x) {
+    for (int y = 0; y < rows; ++y) points.emplace_back(double(x), double(y));
+  }
+  return points;
+}
+
+bool contains(const Triangle& t, int sample) { return std::find(t.begin(), t.end(), sample) != t.end(); }
+
+// The objective recomputed from scratch: every sample that is not a
+// reference, reconstructed from the triangle around it.
+double meanError(const ViewMesh& mesh, const FormulaErrors::Formula& formula) {
+  double sum = 0.0;
+  int count = 0;
+  for (int i = 0; i < int(mesh.positions().size()); ++i) {
+    if (std::binary_search(mesh.vertices().begin(), mesh.vertices().end(), i)) continue;
+    Triangle t = mesh.triangles()[size_t(mesh.locate(mesh.position(i)))];
+    std::sort(t.begin(), t.end());
+    sum += formula(t, i);
+    ++count;
+  }
+  return sum / double(count);
+}
+
+}  // namespace
+
+TEST_CASE("a reference that spoils every triangle it is in moves away to the lowest free neighbour") {
+  //   4  7 11 15     a 4 x 4 grid, 1 m apart, numbered column by column
+  //   3  6 10 14     except that sample 0 is the one at (1, 1);
+  //   2  0  9 13     references: the corners 1, 4, 12, 15 and sample 0,
+  //   1  5  8 12     whose panorama is bad: every reconstruction that uses
+  //                  it costs 11, every other costs 1.
+  std::vector<glm::dvec2> positions = {{1, 1}};
+  for (const glm::dvec2& p : grid(4, 4)) {
+    if (p != glm::dvec2(1, 1)) positions.push_back(p);
+  }
+  const FormulaErrors::Formula formula = [](const Triangle& t, int) { return contains(t, 0) ? 11.0 : 1.0; };
+  FormulaErrors errors(formula);
+  const std::vector<int> references = {0, 1, 4, 12, 15};
+  const ViewMesh start = ViewMesh::delaunay(positions, references, "test");
+  const RefinementResult result = refineSelection(positions, references, start.triangles(), errors, {1.5, 8});
+
+  // Sample 0 is in every triangle of the start, so every sample costs 11.
+  CHECK(result.objectiveBefore == 11.0);
+  // Sample 0 is examined first; moving it to any free neighbour removes
+  // the bad panorama, so those moves tie at 1 and the lowest index (2, at
+  // (0, 1)) wins; nothing can go below 1 after that.
+  REQUIRE(result.moves.size() == 1);
+  CHECK(result.moves[0].kind == PlacementKind::Relocation);
+  CHECK(result.moves[0].first == 0);
+  CHECK(result.moves[0].placement == 2);
+  CHECK(result.moves[0].cost == 1.0);
+  CHECK(result.objectiveAfter == 1.0);
+  const ViewMesh final(positions, result.triangles);
+  CHECK(final.vertices() == std::vector<int>{1, 2, 4, 12, 15});
+  CHECK(final.triangles() == ViewMesh::delaunay(positions, final.vertices(), "test").triangles());
+}
+
+TEST_CASE("refinement lowers the mean error, logs moves that replay to the result, and keeps the sample count") {
+  // 8 x 5 grid; a reconstruction costs the distance from the destination to
+  // the nearest of its references, so references crowded into one corner
+  // must spread out.
+  const std::vector<glm::dvec2> positions = grid(8, 5);
+  const FormulaErrors::Formula formula = [&](const Triangle& t, int destination) {
+    double nearest = 1e9;
+    for (int r : t) nearest = std::min(nearest, glm::length(positions[size_t(r)] - positions[size_t(destination)]));
+    return nearest;
+  };
+  FormulaErrors errors(formula);
+  const std::vector<int> references = {0, 1, 5, 6, 2};  // (0,0) (0,1) (1,0) (1,1) (0,2)
+  const ViewMesh start = ViewMesh::delaunay(positions, references, "test");
+  const RefinementResult result = refineSelection(positions, references, start.triangles(), errors, {1.5, 20});
+
+  REQUIRE(result.moves.size() >= 3);
+  CHECK(result.objectiveAfter < 0.6 * result.objectiveBefore);
+  const ViewMesh final(positions, result.triangles);
+  CHECK(final.vertexCount() == 5);
+  CHECK(result.objectiveAfter == doctest::Approx(meanError(final, formula)));
+  // Each move lowers the objective; replaying them from the start triangles
+  // passes through Delaunay meshes of the moved references to the result.
+  double previous = result.objectiveBefore;
+  std::vector<Triangle> replayed = start.triangles();
+  std::vector<int> current = references;
+  std::sort(current.begin(), current.end());
+  for (size_t i = 0; i < result.moves.size(); ++i) {
+    const Collapse& move = result.moves[i];
+    CHECK(move.cost < previous);
+    previous = move.cost;
+    CHECK(glm::length(positions[size_t(move.placement)] - positions[size_t(move.first)]) <= 1.5);
+    std::replace(current.begin(), current.end(), move.first, move.placement);
+    std::sort(current.begin(), current.end());
+    replayed = replayForward(replayed, std::span(result.moves).subspan(i, 1), 1);
+    CHECK(replayed == ViewMesh::delaunay(positions, current, "test").triangles());
+    CHECK(samplesAfter(5, result.moves, i + 1) == 5);
+  }
+  CHECK(replayed == result.triangles);
+  CHECK(replayBackward(result.triangles, result.moves, result.moves.size()) == start.triangles());
+  // A second refinement from the result finds nothing to move.
+  CHECK(refineSelection(positions, final.vertices(), final.triangles(), errors, {1.5, 20}).moves.empty());
+}
+
+TEST_CASE("refinement with radius 0 changes nothing, and Ctrl-C stops it") {
+  const std::vector<glm::dvec2> positions = grid(6, 4);
+  FormulaErrors errors([](const Triangle& t, int destination) { return double((t[0] + t[1] + t[2] + destination) % 7); });
+  const std::vector<int> references = {0, 3, 20, 23, 9};
+  const ViewMesh start = ViewMesh::delaunay(positions, references, "test");
+  const RefinementResult unchanged = refineSelection(positions, references, start.triangles(), errors, {0.0, 8});
+  CHECK(unchanged.moves.empty());
+  CHECK(unchanged.triangles == start.triangles());
+  CHECK(unchanged.objectiveAfter == unchanged.objectiveBefore);
+
+  requestInterrupt();
+  CHECK_THROWS_AS(refineSelection(positions, references, start.triangles(), errors, {1.5, 8}), Interrupted);
+  clearInterrupt();
+}
+
+TEST_CASE("sample counts along a log with relocations, and where a count is last reached") {
+  std::vector<Collapse> log(4);
+  log[0].kind = PlacementKind::Midpoint;
+  log[1].kind = PlacementKind::First;
+  log[2].kind = PlacementKind::Relocation;
+  log[3].kind = PlacementKind::Relocation;
+  CHECK(samplesAfter(10, log, 0) == 10);
+  CHECK(samplesAfter(10, log, 2) == 8);
+  CHECK(samplesAfter(10, log, 4) == 8);
+  CHECK(lastStepWithSamples(10, log, 10) == 0u);
+  CHECK(lastStepWithSamples(10, log, 9) == 1u);
+  CHECK(lastStepWithSamples(10, log, 8) == 4u);  // the refinement is part of the final count
+  CHECK(!lastStepWithSamples(10, log, 7).has_value());
+}
+
+TEST_CASE("a captured data set: decimation then refinement, the same with 1 and 2 threads, and through selection.json") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 5, 3, 64, 1);
+  const Dataset dataset = Dataset::open(directory / "data");
+  const std::vector<glm::dvec2> positions = samplePositions(dataset);
+  const ViewMesh initial = ViewMesh::delaunay(positions, {}, "test");
+  TriangleErrorSettings settings;
+  settings.width = 64;
+  auto run = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+    DatasetTriangleErrors errors(dataset, settings, true);
+    EdgeCollapseDecimator decimator(initial, errors, DecimationOptions{0.0, 5, false});
+    decimator.run();
+    const ViewMesh decimated = decimator.mesh();
+    RefinementResult refinement =
+        refineSelection(positions, decimated.vertices(), decimated.triangles(), errors, {10.0, 8});
+    std::vector<Collapse> log = decimator.log();
+    log.insert(log.end(), refinement.moves.begin(), refinement.moves.end());
+    return std::pair(log, refinement);
+  };
+  const auto [one, refinedOne] = run(1);
+  const auto [two, refinedTwo] = run(2);
+  REQUIRE(!refinedOne.moves.empty());
+  REQUIRE(one.size() == two.size());
+  for (size_t i = 0; i < one.size(); ++i) {
+    CHECK(one[i].kind == two[i].kind);
+    CHECK(one[i].placement == two[i].placement);
+    CHECK(one[i].cost == two[i].cost);
+  }
+  CHECK(refinedOne.triangles == refinedTwo.triangles);
+  CHECK(refinedOne.objectiveAfter <= refinedOne.objectiveBefore);
+
+  Selection selection;
+  selection.method = "edge_collapse";
+  selection.samples = ViewMesh(positions, refinedOne.triangles).vertices();
+  selection.triangles = refinedOne.triangles;
+  selection.initialTriangles = initial.triangles();
+  selection.collapses = one;
+  const std::filesystem::path file = directory / "selection.json";
+  writeSelection(file, selection, dataset);
+  const Selection loaded = readSelection(file, dataset);
+  REQUIRE(loaded.collapses.size() == one.size());
+  for (size_t i = 0; i < one.size(); ++i) {
+    CHECK(loaded.collapses[i].kind == one[i].kind);
+    CHECK(loaded.collapses[i].first == one[i].first);
+    CHECK(loaded.collapses[i].second == one[i].second);
+    CHECK(loaded.collapses[i].placement == one[i].placement);
+  }
+  CHECK(loaded.triangles == refinedOne.triangles);
+  CHECK(samplesAfter(initial.vertexCount(), loaded.collapses, loaded.collapses.size()) == 5);
+}
+
+}  // namespace triwalk

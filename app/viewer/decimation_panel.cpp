@@ -1,5 +1,6 @@
-// Decimation: step one or N collapses, forward and back, run to an error
-// threshold or a sample count, see the cost of each step, save.
+// Decimation: step one or N collapses (and the refinement's moves after
+// them), forward and back, run to an error threshold or a sample count, see
+// the cost of each step, save.
 
 #include "app/viewer/panel_window.h"
 #include "app/viewer/viewer_state.h"
@@ -18,7 +19,10 @@ void drawDecimationPanel(ViewerState& state) {
   DecimationSession& session = *state.session;
   ImGui::Text("samples %d   triangles %zu   step %d of %d logged", s.samples, s.triangles.size(), s.step, s.logSize);
   const double currentCost = s.step > 0 && s.step <= int(s.costs.size()) ? s.costs[size_t(s.step - 1)] : 0.0;
-  if (s.step < s.logSize) {
+  if (s.step > s.firstRelocation && s.step <= s.logSize) {
+    ImGui::Text("refinement move %d of %d: dense-sample error %.3f", s.step - s.firstRelocation,
+                s.logSize - s.firstRelocation, currentCost);
+  } else if (s.step < s.logSize) {
     ImGui::Text("current cost %.3f   next cost %.3f (logged)", currentCost, s.costs[size_t(s.step)]);
   } else if (s.nextCost < 0.0) {
     ImGui::Text("current cost %.3f   next cost: step to compute it", currentCost);
@@ -54,7 +58,9 @@ void drawDecimationPanel(ViewerState& state) {
   if (!s.costs.empty()) {
     std::vector<float> costs(s.costs.begin(), s.costs.end());
     char overlay[64];
-    std::snprintf(overlay, sizeof overlay, "cost of each collapse (step %d)", s.step);
+    std::snprintf(overlay, sizeof overlay, s.firstRelocation < s.logSize ? "collapse costs, then refinement (step %d)"
+                                                                          : "cost of each collapse (step %d)",
+                  s.step);
     ImGui::PlotLines("##costs", costs.data(), int(costs.size()), 0, overlay, 0.0f, FLT_MAX,
                      ImVec2(ImGui::GetContentRegionAvail().x, 110));
   }

@@ -4,6 +4,7 @@
 #include "core/png_io.h"
 #include "core/progress.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -147,6 +148,9 @@ void DecimationSession::publish(const std::string& status) {
   for (const Collapse& collapse : log_) next.costs.push_back(collapse.cost);
   next.step = step_;
   next.logSize = int(log_.size());
+  next.firstRelocation = int(std::find_if(log_.begin(), log_.end(), [](const Collapse& c) {
+                               return c.kind == PlacementKind::Relocation;
+                             }) - log_.begin());
   next.samples = samplesAfter(initialSamples_, log_, size_t(step_));
   next.errorsReady = errors_ != nullptr;
   if (decimator_ && decimatorStep_ == step_ && step_ == int(log_.size())) next.nextCost = decimator_->nextCost();

@@ -42,6 +42,7 @@ public:
     std::vector<double> costs;           // cost of each logged collapse
     int step = 0;                        // collapses applied
     int logSize = 0;
+    int firstRelocation = 0;             // where the refinement starts in the log (logSize: none)
     int samples = 0;
     double nextCost = -1.0;              // of the next new collapse; -1 unknown, +inf none
     bool errorsReady = false;            // panoramas loaded at the error width

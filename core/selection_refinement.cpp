@@ -1,5 +1,6 @@
 #include "core/selection_refinement.h"
 
+#include "core/errors.h"
 #include "core/progress.h"
 #include "core/view_mesh.h"
 
@@ -99,6 +100,7 @@ RefinementResult refineSelection(std::span<const glm::dvec2> positions, std::vec
   RefinementResult result;
   ObjectiveEvaluator evaluator(positions, errors, result);
   std::sort(references.begin(), references.end());
+  TRIWALK_CHECK(!current.empty(), "refining a selection needs its triangles");
   ViewMesh mesh(std::vector<glm::dvec2>(positions.begin(), positions.end()), current);
   std::vector<SampleReconstruction> assignment = evaluator.assignments(mesh);
   evaluator.compute({assignment});

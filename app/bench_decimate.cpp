@@ -49,7 +49,7 @@ void benchDecimate(BenchTable& table, const Scene& scene, const std::string& dat
   const uint64_t layersComputed = errors.layerCache().misses(), layersReused = errors.layerCache().hits();
   const ViewMesh decimated = decimator.mesh();
   const auto refineStart = BenchClock::now();
-  const RefinementResult refinement = refineSelection(initial.positions(), decimated.vertices(), decimated.triangles(),
+  const RefinementResult refinement = refineSelection(initial.positions(), decimated.triangles(),
                                                       errors, RefinementOptions{});
   const double refineSeconds = secondsSince(refineStart);
   table.add({"decimation wall time (edge collapse to the paper's 1.85)", size,

@@ -82,7 +82,7 @@ void registerDecimateCommand(CLI::App& app) {
     RefinementOptions refinementOptions;
     refinementOptions.radius = a.refineRadius;
     ProgressReporter refining("refine: move references", 0, a.quiet || a.refineRadius <= 0.0);
-    const RefinementResult refinement = refineSelection(initial.positions(), decimated.vertices(), decimated.triangles(),
+    const RefinementResult refinement = refineSelection(initial.positions(), decimated.triangles(),
                                                         errors, refinementOptions, &refining);
     refining.finish();
     const ViewMesh final(initial.positions(), refinement.triangles);

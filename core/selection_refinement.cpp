@@ -94,14 +94,14 @@ std::vector<int> neighboursOf(const ViewMesh& mesh, int sample) {
 
 }  // namespace
 
-RefinementResult refineSelection(std::span<const glm::dvec2> positions, std::vector<int> references,
-                                 const std::vector<Triangle>& current, ReconstructionErrorSource& errors,
-                                 const RefinementOptions& options, ProgressReporter* progress) {
+RefinementResult refineSelection(std::span<const glm::dvec2> positions, const std::vector<Triangle>& current,
+                                 ReconstructionErrorSource& errors, const RefinementOptions& options,
+                                 ProgressReporter* progress) {
   RefinementResult result;
   ObjectiveEvaluator evaluator(positions, errors, result);
-  std::sort(references.begin(), references.end());
   TRIWALK_CHECK(!current.empty(), "refining a selection needs its triangles");
   ViewMesh mesh(std::vector<glm::dvec2>(positions.begin(), positions.end()), current);
+  std::vector<int> references = mesh.vertices();  // sorted
   std::vector<SampleReconstruction> assignment = evaluator.assignments(mesh);
   evaluator.compute({assignment});
   double objective = evaluator.mean(assignment);
@@ -165,7 +165,8 @@ RefinementResult refineSelection(std::span<const glm::dvec2> positions, std::vec
       objective = bestObjective;
       if (progress) {
         char status[96];
-        std::snprintf(status, sizeof status, "pass %d, %zu moves, mean error %.4f", result.passes, result.moves.size(), objective);
+        std::snprintf(status, sizeof status, "pass %d, %zu moves, mean error %.4f", result.passes, result.moves.size(),
+                      objective);
         progress->setStatus(status);
       }
     }

@@ -45,21 +45,22 @@ struct RefinementOptions {
 };
 
 struct RefinementResult {
-  std::vector<Collapse> moves;  // kind Relocation: first moved to placement
+  std::vector<Collapse> moves;      // kind Relocation: first moved to placement
   std::vector<Triangle> triangles;  // the final triangulation (sorted, canonical)
-  double objectiveBefore = 0.0;  // of the starting triangles
+  double objectiveBefore = 0.0;     // of the starting triangles
   double objectiveAfter = 0.0;
   int passes = 0;
   uint64_t errorsComputed = 0;
   uint64_t cacheHits = 0;
 };
 
-// references: the selection (sample indices); current: its triangles now.
-// A move is kept only if it lowers the objective below that of the mesh in
-// use, so the first one may also re-triangulate a decimated mesh. progress, if given, counts references examined; Ctrl-C throws
+// current: the selection's triangles now (its vertices are the
+// references). A move is kept only if it lowers the objective below that
+// of the mesh in use, so the first one may also re-triangulate a decimated
+// mesh. progress, if given, counts references examined; Ctrl-C throws
 // Interrupted between batches.
-RefinementResult refineSelection(std::span<const glm::dvec2> positions, std::vector<int> references,
-                                 const std::vector<Triangle>& current, ReconstructionErrorSource& errors,
-                                 const RefinementOptions& options, ProgressReporter* progress = nullptr);
+RefinementResult refineSelection(std::span<const glm::dvec2> positions, const std::vector<Triangle>& current,
+                                 ReconstructionErrorSource& errors, const RefinementOptions& options,
+                                 ProgressReporter* progress = nullptr);
 
 }  // namespace triwalk

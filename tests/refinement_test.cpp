@@ -2,12 +2,12 @@
 // while that lowers the mean error over the dense samples, on tiny grids
 // with errors whose best answer is known, and on a captured data set.
 
-#include "core/selection_refinement.h"
 #include "core/atomic_file.h"
 #include "core/dataset.h"
 #include "core/errors.h"
 #include "core/progress.h"
 #include "core/selection.h"
+#include "core/selection_refinement.h"
 #include "core/view_mesh.h"
 #include "tests/analytic_scene.h"
 #include "tests/test_support.h"
@@ -46,7 +46,9 @@ std::vector<glm::dvec2> grid(int columns, int rows) {
   return points;
 }
 
-bool contains(const Triangle& t, int sample) { return std::find(t.begin(), t.end(), sample) != t.end(); }
+bool contains(const Triangle& t, int sample) {
+  return std::find(t.begin(), t.end(), sample) != t.end();
+}
 
 // The objective recomputed from scratch: every sample that is not a
 // reference, reconstructed from the triangle around it.
@@ -79,7 +81,7 @@ TEST_CASE("a reference that spoils every triangle it is in moves away to the low
   FormulaErrors errors(formula);
   const std::vector<int> references = {0, 1, 4, 12, 15};
   const ViewMesh start = ViewMesh::delaunay(positions, references, "test");
-  const RefinementResult result = refineSelection(positions, references, start.triangles(), errors, {1.5, 8});
+  const RefinementResult result = refineSelection(positions, start.triangles(), errors, {1.5, 8});
 
   // Sample 0 is in every triangle of the start, so every sample costs 11.
   CHECK(result.objectiveBefore == 11.0);
@@ -110,7 +112,7 @@ TEST_CASE("refinement lowers the mean error, logs moves that replay to the resul
   FormulaErrors errors(formula);
   const std::vector<int> references = {0, 1, 5, 6, 2};  // (0,0) (0,1) (1,0) (1,1) (0,2)
   const ViewMesh start = ViewMesh::delaunay(positions, references, "test");
-  const RefinementResult result = refineSelection(positions, references, start.triangles(), errors, {1.5, 20});
+  const RefinementResult result = refineSelection(positions, start.triangles(), errors, {1.5, 20});
 
   REQUIRE(result.moves.size() >= 3);
   CHECK(result.objectiveAfter < 0.6 * result.objectiveBefore);
@@ -137,21 +139,22 @@ TEST_CASE("refinement lowers the mean error, logs moves that replay to the resul
   CHECK(replayed == result.triangles);
   CHECK(replayBackward(result.triangles, result.moves, result.moves.size()) == start.triangles());
   // A second refinement from the result finds nothing to move.
-  CHECK(refineSelection(positions, final.vertices(), final.triangles(), errors, {1.5, 20}).moves.empty());
+  CHECK(refineSelection(positions, final.triangles(), errors, {1.5, 20}).moves.empty());
 }
 
 TEST_CASE("refinement with radius 0 changes nothing, and Ctrl-C stops it") {
   const std::vector<glm::dvec2> positions = grid(6, 4);
-  FormulaErrors errors([](const Triangle& t, int destination) { return double((t[0] + t[1] + t[2] + destination) % 7); });
+  FormulaErrors errors(
+      [](const Triangle& t, int destination) { return double((t[0] + t[1] + t[2] + destination) % 7); });
   const std::vector<int> references = {0, 3, 20, 23, 9};
   const ViewMesh start = ViewMesh::delaunay(positions, references, "test");
-  const RefinementResult unchanged = refineSelection(positions, references, start.triangles(), errors, {0.0, 8});
+  const RefinementResult unchanged = refineSelection(positions, start.triangles(), errors, {0.0, 8});
   CHECK(unchanged.moves.empty());
   CHECK(unchanged.triangles == start.triangles());
   CHECK(unchanged.objectiveAfter == unchanged.objectiveBefore);
 
   requestInterrupt();
-  CHECK_THROWS_AS(refineSelection(positions, references, start.triangles(), errors, {1.5, 8}), Interrupted);
+  CHECK_THROWS_AS(refineSelection(positions, start.triangles(), errors, {1.5, 8}), Interrupted);
   clearInterrupt();
 }
 
@@ -170,7 +173,8 @@ TEST_CASE("sample counts along a log with relocations, and where a count is last
   CHECK(!lastStepWithSamples(10, log, 7).has_value());
 }
 
-TEST_CASE("a captured data set: decimation then refinement, the same with 1 and 2 threads, and through selection.json") {
+TEST_CASE(
+    "a captured data set: decimation then refinement, the same with 1 and 2 threads, and through selection.json") {
   testing::TemporaryDirectory directory;
   testing::writeAnalyticDataset(directory / "data", 5, 3, 64, 1);
   const Dataset dataset = Dataset::open(directory / "data");
@@ -184,8 +188,7 @@ TEST_CASE("a captured data set: decimation then refinement, the same with 1 and 
     EdgeCollapseDecimator decimator(initial, errors, DecimationOptions{0.0, 5, false});
     decimator.run();
     const ViewMesh decimated = decimator.mesh();
-    RefinementResult refinement =
-        refineSelection(positions, decimated.vertices(), decimated.triangles(), errors, {10.0, 8});
+    RefinementResult refinement = refineSelection(positions, decimated.triangles(), errors, {10.0, 8});
     std::vector<Collapse> log = decimator.log();
     log.insert(log.end(), refinement.moves.begin(), refinement.moves.end());
     return std::pair(log, refinement);

@@ -26,6 +26,11 @@ Triangle canonicalTriangle(Triangle t) {
   return t;
 }
 
+Triangle sortedTriangle(Triangle t) {
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
 std::vector<Triangle> delaunayTriangles(std::span<const glm::dvec2> points) {
   std::vector<std::pair<Point, int>> input;
   input.reserve(points.size());

@@ -14,8 +14,8 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-uint64_t tripleKey(Triangle t) {
-  std::sort(t.begin(), t.end());
+uint64_t tripleKey(const Triangle& triangle) {
+  const Triangle t = sortedTriangle(triangle);
   return (uint64_t(t[0]) << 42) | (uint64_t(t[1]) << 21) | uint64_t(t[2]);
 }
 

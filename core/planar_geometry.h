@@ -27,4 +27,8 @@ int orientation(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c);
 // Rotates a triangle to start at its smallest index (same orientation).
 Triangle canonicalTriangle(Triangle triangle);
 
+// The vertices in ascending order (orientation lost): the key of a
+// triangle whatever its rotation or winding, for caches.
+Triangle sortedTriangle(Triangle triangle);
+
 }  // namespace triwalk

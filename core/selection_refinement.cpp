@@ -14,11 +14,6 @@ namespace triwalk {
 
 namespace {
 
-Triangle sorted(Triangle t) {
-  std::sort(t.begin(), t.end());
-  return t;
-}
-
 // Which triangle reconstructs each dense sample that is not a reference.
 class ObjectiveEvaluator {
 public:
@@ -32,7 +27,7 @@ public:
     for (int i = 0; i < int(positions_.size()); ++i) {
       if (std::binary_search(references.begin(), references.end(), i)) continue;
       hint = mesh.locate(positions_[size_t(i)], hint);
-      requests.push_back({sorted(mesh.triangles()[size_t(hint)]), i});
+      requests.push_back({sortedTriangle(mesh.triangles()[size_t(hint)]), i});
     }
     return requests;
   }

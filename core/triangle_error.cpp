@@ -170,16 +170,12 @@ void DatasetTriangleErrors::computeReconstructionErrors(std::span<const SampleRe
 namespace triwalk {
 
 void CachingTriangleErrors::computeErrors(std::span<const Triangle> triangles, std::span<double> errors) {
-  auto sorted = [](Triangle t) {
-    std::sort(t.begin(), t.end());
-    return t;
-  };
   std::vector<Triangle> missing;
   std::vector<size_t> missingAt;
   {
     std::lock_guard lock(mutex_);
     for (size_t i = 0; i < triangles.size(); ++i) {
-      const auto known = known_.find(sorted(triangles[i]));
+      const auto known = known_.find(sortedTriangle(triangles[i]));
       if (known != known_.end()) {
         errors[i] = known->second;
       } else {
@@ -194,7 +190,7 @@ void CachingTriangleErrors::computeErrors(std::span<const Triangle> triangles, s
   std::lock_guard lock(mutex_);
   for (size_t j = 0; j < missing.size(); ++j) {
     errors[missingAt[j]] = computed[j];
-    known_[sorted(missing[j])] = computed[j];
+    known_[sortedTriangle(missing[j])] = computed[j];
   }
 }
 

@@ -35,8 +35,7 @@ public:
       const Triangle& t = triangles[i];
       const glm::dvec2 a = positions_[size_t(t[0])], b = positions_[size_t(t[1])], c = positions_[size_t(t[2])];
       const double area = 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
-      std::array<int, 3> sorted = t;
-      std::sort(sorted.begin(), sorted.end());
+      const Triangle sorted = sortedTriangle(t);
       errors[i] = area + 1e-4 * double((sorted[0] * 31 + sorted[1] * 17 + sorted[2] * 7) % 101);
       ++evaluations;
     }

@@ -57,9 +57,7 @@ double meanError(const ViewMesh& mesh, const FormulaErrors::Formula& formula) {
   int count = 0;
   for (int i = 0; i < int(mesh.positions().size()); ++i) {
     if (std::binary_search(mesh.vertices().begin(), mesh.vertices().end(), i)) continue;
-    Triangle t = mesh.triangles()[size_t(mesh.locate(mesh.position(i)))];
-    std::sort(t.begin(), t.end());
-    sum += formula(t, i);
+    sum += formula(sortedTriangle(mesh.triangles()[size_t(mesh.locate(mesh.position(i)))]), i);
     ++count;
   }
   return sum / double(count);

@@ -13,7 +13,6 @@
 #include "tests/test_support.h"
 
 #include <doctest/doctest.h>
-#include <tbb/global_control.h>
 
 #include <cmath>
 #include <fstream>
@@ -279,30 +278,6 @@ TEST_CASE("collinear and too few samples are refused with a clear error") {
   CHECK_THROWS_WITH_AS(ViewMesh::delaunay(two, {}, "manifest.json"), doctest::Contains("at least 3 samples"), InputError);
 }
 
-
-TEST_CASE("decimation of a captured data set gives the same selection with 1 and 2 threads") {
-  testing::TemporaryDirectory directory;
-  testing::writeAnalyticDataset(directory.path(), 5, 3, 64, 2);
-  const Dataset dataset = Dataset::open(directory.path());
-  const ViewMesh initial = ViewMesh::delaunay(samplePositions(dataset), {}, "test");
-  TriangleErrorSettings settings;
-  settings.width = 64;
-  auto decimate = [&](int threads) {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-    DatasetTriangleErrors errors(dataset, settings, true);
-    EdgeCollapseDecimator decimator(initial, errors, DecimationOptions{0.0, 5, false});
-    decimator.run();
-    return decimator.log();
-  };
-  const std::vector<Collapse> one = decimate(1), two = decimate(2);
-  REQUIRE(one.size() == 10);
-  REQUIRE(two.size() == one.size());
-  for (size_t i = 0; i < one.size(); ++i) {
-    CHECK(one[i].placement == two[i].placement);
-    CHECK(one[i].cost == two[i].cost);
-    CHECK(one[i].added == two[i].added);
-  }
-}
 
 TEST_CASE("selection.json round trip, and bad selections name the file and the problem") {
   testing::TemporaryDirectory directory;

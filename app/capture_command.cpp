@@ -1,11 +1,7 @@
-#include "app/commands.h"
-#include "app/scene_loading.h"
-#include "core/errors.h"
-#include "render/dataset_capture.h"
-#include "render/gl_context.h"
-#include "render/walkable_area.h"
+// `triwalk capture`: render a scene's dense samples and probes into a data set.
 
-#include <cstdio>
+#include "app/commands.h"
+#include "app/scene_capture.h"
 
 namespace triwalk {
 
@@ -52,30 +48,17 @@ void registerCaptureCommand(CLI::App& app) {
 
   command->callback([arguments] {
     Arguments& a = *arguments;
-    if (!a.area.empty()) a.options.area = glm::vec4(a.area[0], a.area[1], a.area[2], a.area[3]);
-    if (a.eyeHeight > 0.0f) a.options.eyeHeight = a.eyeHeight;
-    if (a.spacing > 0.0f) a.options.spacing = a.spacing;
-    LoadedScene loaded = loadSceneForCapture(a.scene, a.import);
-    auto context = createHeadlessContext(parseHeadlessBackend(a.gl));
-    if (a.autoArea || (loaded.imported && a.area.empty())) {
-      const float eyeHeight = a.eyeHeight > 0.0f ? a.eyeHeight : loaded.scene.walkableArea.eyeHeight;
-      const WalkableAreaProposal proposal = proposeWalkableArea(loaded.scene, eyeHeight, 0.5f, a.scene);
-      std::printf("%s\n", proposal.reason.c_str());
-      loaded.scene.walkableArea.min = {proposal.area.x, proposal.area.y};
-      loaded.scene.walkableArea.max = {proposal.area.z, proposal.area.w};
-      loaded.scene.walkableArea.floorHeight = proposal.floorZ;
-      loaded.scene.walkableArea.eyeHeight = eyeHeight;
-    }
-    const CapturePlan plan = planCapture(loaded.scene, a.options);
-    std::printf("scene %s: %zu triangles; %d paths x %d samples over [%.2f, %.2f] x [%.2f, %.2f] m at z = %.2f m, "
-                "%d probes, %dx%d\n",
-                loaded.name.c_str(), loaded.scene.triangleCount(), plan.paths, plan.perPath, plan.area.x, plan.area.z,
-                plan.area.y, plan.area.w, plan.eyeZ, a.options.probes, a.options.width, a.options.width / 2);
-    const CaptureSummary summary = captureDataset(loaded.scene, loaded.name, a.options, a.out);
-    std::printf("captured %d samples and %d probes into %s in %.1f s (%.2f panoramas/s) with %s\n", summary.samples,
-                summary.probes, a.out.c_str(), summary.seconds,
-                double(summary.samples + summary.probes) / std::max(summary.seconds, 1e-9),
-                context->description().c_str());
+    SceneCaptureRequest request;
+    request.scene = a.scene;
+    request.import = a.import;
+    request.options = a.options;
+    if (!a.area.empty()) request.options.area = glm::vec4(a.area[0], a.area[1], a.area[2], a.area[3]);
+    if (a.eyeHeight > 0.0f) request.options.eyeHeight = a.eyeHeight;
+    if (a.spacing > 0.0f) request.options.spacing = a.spacing;
+    request.autoArea = a.autoArea;
+    request.gl = a.gl;
+    request.out = a.out;
+    captureScene(request);
   });
 }
 

@@ -13,5 +13,6 @@ void registerDecimateCommand(CLI::App& app);
 void registerEvalCommand(CLI::App& app);
 void registerRenderCommand(CLI::App& app);
 void registerViewCommand(CLI::App& app);
+void registerSuiteCommand(CLI::App& app);
 
 }  // namespace triwalk

@@ -3,13 +3,11 @@
 
 #include "app/commands.h"
 #include "app/decimation_options.h"
-#include "core/edge_collapse_decimator.h"
 #include "core/errors.h"
 #include "core/progress.h"
-#include "core/selection.h"
-#include "core/selection_refinement.h"
+#include "core/reference_selection.h"
 
-#include <chrono>
+#include <cmath>
 #include <cstdio>
 
 namespace triwalk {
@@ -19,10 +17,8 @@ void registerDecimateCommand(CLI::App& app) {
     std::string dataset, out;
     double maxError = DecimationOptions{}.maxError;
     int target = 0;
-    bool oneRing = false;
-    bool unweightedCost = false;
-    double refineRadius = RefinementOptions{}.radius;
     bool quiet = false;
+    SelectionArguments selection;
     ErrorArguments errors;
   };
   auto arguments = std::make_shared<Arguments>();
@@ -34,14 +30,7 @@ void registerDecimateCommand(CLI::App& app) {
       ->capture_default_str()->check(CLI::NonNegativeNumber);
   command->add_option("--target", arguments->target, "Stop at this many samples; 0 disables")
       ->capture_default_str()->check(CLI::NonNegativeNumber);
-  command->add_flag("--one-ring", arguments->oneRing,
-                    "Also try every free sample inside the two one-rings as the placement");
-  command->add_flag("--unweighted-cost", arguments->unweightedCost,
-                    "Edge cost as the paper's plain mean of the updated triangles' errors (default: area-weighted)");
-  command->add_option("--refine-radius", arguments->refineRadius,
-                      "After decimation, move references up to this far (metres) at a time while that lowers the "
-                      "mean error over the dense samples; 0 disables")
-      ->capture_default_str()->check(CLI::NonNegativeNumber);
+  addSelectionOptions(*command, arguments->selection);
   command->add_flag("--quiet", arguments->quiet, "No progress output");
   addErrorOptions(*command, arguments->errors);
 
@@ -56,68 +45,32 @@ void registerDecimateCommand(CLI::App& app) {
     }
     const TriangleErrorSettings settings = triangleErrorSettings(a.errors);
     std::printf("%s\n", describeErrorSettings(settings).c_str());
-    const ViewMesh initial = ViewMesh::delaunay(samplePositions(dataset), {}, dataset.manifestPath().string());
-    std::printf("dense triangulation: %d samples, %d triangles\n", initial.vertexCount(), initial.triangleCount());
 
     InterruptScope interruptScope;
     DatasetTriangleErrors errors(dataset, settings, a.quiet);
-    DecimationOptions options;
-    options.maxError = a.maxError;
-    options.targetSamples = a.target;
-    options.oneRingCandidates = a.oneRing;
-    options.areaWeightedCost = !a.unweightedCost;
-    const auto start = std::chrono::steady_clock::now();
-    ProgressReporter costing("cost every edge (triangle errors)", 0, a.quiet);
-    EdgeCollapseDecimator decimator(initial, errors, options, &costing);
-    costing.finish();
-    const double costingSeconds = costing.elapsedSeconds();
-    const size_t expected = a.target > 0 ? size_t(initial.vertexCount() - a.target) : 0;
-    ProgressReporter progress("collapse", expected, a.quiet);
-    const StopReason reason = decimator.run(&progress);
-    progress.finish();
-    if (reason == StopReason::Interrupted) throw Interrupted();
-    const double decimationSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const SelectionSettings selection = selectionSettings(a.selection, a.maxError, a.target);
+    SelectionRun run = selectReferences(dataset, errors, selection, a.quiet);
 
-    const ViewMesh decimated = decimator.mesh();
-    RefinementOptions refinementOptions;
-    refinementOptions.radius = a.refineRadius;
-    ProgressReporter refining("refine: move references", 0, a.quiet || a.refineRadius <= 0.0);
-    const RefinementResult refinement = refineSelection(initial.positions(), decimated.triangles(),
-                                                        errors, refinementOptions, &refining);
-    refining.finish();
-    const ViewMesh final(initial.positions(), refinement.triangles);
+    run.selection.settings = describeSelectionSettings(selection, settings);
+    writeSelection(a.out, run.selection, dataset);
 
-    Selection selection;
-    selection.method = "edge_collapse";
-    selection.samples = final.vertices();
-    selection.triangles = final.triangles();
-    selection.initialTriangles = initial.triangles();
-    selection.collapses = decimator.log();
-    selection.collapses.insert(selection.collapses.end(), refinement.moves.begin(), refinement.moves.end());
-    selection.stopReason = stopReasonName(reason);
-    selection.nextCost = decimator.nextCost();
-    selection.settings = {{"max_error", a.maxError},
-                          {"target", a.target},
-                          {"one_ring", a.oneRing},
-                          {"area_weighted_cost", !a.unweightedCost},
-                          {"refine_radius", a.refineRadius},
-                          {"error_width", settings.width},
-                          {"quality", describeErrorSettings(settings)}};
-    writeSelection(a.out, selection, dataset);
-
-    const DecimationStatistics& statistics = decimator.statistics();
-    std::printf("kept %d of %d samples, %d triangles; stopped: %s", final.vertexCount(), initial.vertexCount(),
-                final.triangleCount(), stopReasonName(reason));
-    if (std::isfinite(selection.nextCost)) std::printf(" (next cost %.3f)", selection.nextCost);
-    std::printf("\n%zu collapses in %.1f s (edge costing %.1f s); triangle errors computed %llu, served from the cache "
-                "%llu; stale heap entries skipped %llu\n",
-                decimator.log().size(), decimationSeconds, costingSeconds, (unsigned long long)statistics.errorsComputed,
+    const DecimationStatistics& statistics = run.statistics;
+    std::printf("kept %zu of %d samples, %zu triangles; stopped: %s", run.selection.samples.size(), run.initialSamples,
+                run.selection.triangles.size(), stopReasonName(run.stopReason));
+    if (std::isfinite(run.selection.nextCost)) {
+      std::printf(run.stopReason == StopReason::MaxError ? " (lowest error of a refused collapse %.3f)" : " (next cost %.3f)",
+                  run.selection.nextCost);
+    }
+    std::printf("\n%zu collapses in %.1f s (edge costing %.1f s); errors computed %llu, served from the cache %llu; "
+                "stale heap entries skipped %llu\n",
+                run.collapses, run.collapseSeconds, run.costingSeconds, (unsigned long long)statistics.errorsComputed,
                 (unsigned long long)statistics.cacheHits, (unsigned long long)statistics.staleEntriesSkipped);
-    if (a.refineRadius > 0.0) {
+    const RefinementResult& refinement = run.refinement;
+    if (selection.refinement.radius > 0.0) {
       std::printf("refinement: %zu references moved in %d passes (radius %.2f m); mean error over the dense samples %.4f "
                   "-> %.4f; %.1f s, errors computed %llu, served from the cache %llu\n",
-                  refinement.moves.size(), refinement.passes, a.refineRadius, refinement.objectiveBefore,
-                  refinement.objectiveAfter, refining.elapsedSeconds(), (unsigned long long)refinement.errorsComputed,
+                  refinement.moves.size(), refinement.passes, selection.refinement.radius, refinement.objectiveBefore,
+                  refinement.objectiveAfter, run.refinementSeconds, (unsigned long long)refinement.errorsComputed,
                   (unsigned long long)refinement.cacheHits);
     }
     std::printf("warped layers computed %llu, reused %llu\n", (unsigned long long)errors.layerCache().misses(),

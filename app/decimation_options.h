@@ -1,8 +1,10 @@
 #pragma once
-// Options shared by decimate and eval: the resolution triangle errors are
-// computed at, plus the warp, blend and error options.
+// Options shared by decimate, eval and suite: the resolution errors are
+// computed at, the warp, blend and error options, and (decimate, suite)
+// how references are selected.
 
 #include "app/quality_options.h"
+#include "core/reference_selection.h"
 #include "core/triangle_error.h"
 
 #include <CLI/CLI.hpp>
@@ -16,6 +18,21 @@ struct ErrorArguments {
 };
 
 void addErrorOptions(CLI::App& command, ErrorArguments& arguments);
+
+// How references are selected, apart from the stopping rule (threshold
+// and target), which decimate and suite set their own way.
+struct SelectionArguments {
+  bool oneRing = false;
+  std::string cost = "served-samples";
+  bool fixedBoundary = false;
+  bool unweightedCost = false;
+  double refineRadius = RefinementOptions{}.radius;
+};
+
+void addSelectionOptions(CLI::App& command, SelectionArguments& arguments);
+SelectionSettings selectionSettings(const SelectionArguments& arguments, double maxError, int targetSamples);
+// For selection.json: the settings that made it.
+nlohmann::json describeSelectionSettings(const SelectionSettings& settings, const TriangleErrorSettings& errors);
 TriangleErrorSettings triangleErrorSettings(const ErrorArguments& arguments);
 std::string describeErrorSettings(const TriangleErrorSettings& settings);
 

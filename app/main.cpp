@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   triwalk::registerDecimateCommand(app);
   triwalk::registerEvalCommand(app);
   triwalk::registerRenderCommand(app);
+  triwalk::registerSuiteCommand(app);
 #ifdef TRIWALK_WITH_VIEWER
   triwalk::registerViewCommand(app);
 #endif

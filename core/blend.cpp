@@ -20,29 +20,7 @@ std::vector<float> blendWeights(glm::vec3 destination, std::span<const glm::vec3
 
 BlendedPixel blendPixel(std::span<const WarpLayer* const> layers, std::span<const float> weights, size_t pixel,
                         const BlendOptions& options) {
-  BlendedPixel result;
-  float front = std::numeric_limits<float>::infinity();
-  for (const WarpLayer* layer : layers) {
-    if (!layer->covered[pixel]) continue;
-    result.hole = false;
-    front = std::min(front, layer->distance.pixels[pixel]);
-  }
-  if (result.hole) return result;
-  glm::vec3 sum(0.0f);
-  float weightSum = 0.0f;
-  for (size_t k = 0; k < layers.size(); ++k) {
-    const WarpLayer& layer = *layers[k];
-    if (!layer.covered[pixel]) continue;
-    const float d = layer.distance.pixels[pixel];
-    const bool inInterval = std::isinf(front) ? std::isinf(d) : std::abs(d - front) < options.epsilon * front;
-    if (!inInterval) continue;
-    sum += weights[k] * layer.color.pixels[pixel];
-    weightSum += weights[k];
-    result.contributors |= uint8_t(1u << k);
-  }
-  result.color = sum / weightSum;
-  result.distance = front;
-  return result;
+  return blendPixelOf(layers, weights, pixel, options);
 }
 
 BlendedView blendLayers(std::span<const WarpLayer* const> layers, std::span<const float> weights, const BlendOptions& options) {

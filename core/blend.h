@@ -7,6 +7,9 @@
 
 #include "core/warp.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <span>
 
 namespace triwalk {
@@ -30,6 +33,40 @@ struct BlendedPixel {
   uint8_t contributors = 0;
   bool hole = true;
 };
+
+// The blend of one pixel over layers of any storage: each layer's
+// coveredAt(pixel), distanceAt(pixel) and colorAt(pixel) (WarpLayer here, the
+// warped-layer cache's half-float layers for decimation).
+template <typename Layer>
+BlendedPixel blendPixelOf(std::span<const Layer* const> layers, std::span<const float> weights, size_t pixel,
+                          const BlendOptions& options) {
+  BlendedPixel result;
+  float distances[8];
+  float front = std::numeric_limits<float>::infinity();
+  for (size_t k = 0; k < layers.size(); ++k) {
+    const bool covered = layers[k]->coveredAt(pixel);
+    distances[k] = covered ? layers[k]->distanceAt(pixel) : std::numeric_limits<float>::quiet_NaN();
+    if (!covered) continue;
+    result.hole = false;
+    front = std::min(front, distances[k]);
+  }
+  if (result.hole) return result;
+  glm::vec3 sum(0.0f);
+  float weightSum = 0.0f;
+  for (size_t k = 0; k < layers.size(); ++k) {
+    const float d = distances[k];
+    if (std::isnan(d)) continue;
+    const bool inInterval = std::isinf(front) ? std::isinf(d) : std::abs(d - front) < options.epsilon * front;
+    if (!inInterval) continue;
+    sum += weights[k] * layers[k]->colorAt(pixel);
+    weightSum += weights[k];
+    result.contributors |= uint8_t(1u << k);
+  }
+  result.color = sum / weightSum;
+  result.distance = front;
+  return result;
+}
+
 BlendedPixel blendPixel(std::span<const WarpLayer* const> layers, std::span<const float> weights, size_t pixel,
                         const BlendOptions& options);
 

@@ -7,6 +7,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 namespace triwalk {
@@ -53,6 +54,20 @@ int orientation(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
     case CGAL::RIGHT_TURN: return -1;
     default: return 0;
   }
+}
+
+double distanceToTriangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, glm::dvec2 point) {
+  const glm::dvec2 corners[3] = {a, b, c};
+  bool inside = true;
+  for (int e = 0; e < 3 && inside; ++e) inside = orientation(corners[e], corners[(e + 1) % 3], point) >= 0;
+  if (inside) return 0.0;
+  double best = std::numeric_limits<double>::max();
+  for (int e = 0; e < 3; ++e) {
+    const glm::dvec2 from = corners[e], edge = corners[(e + 1) % 3] - from;
+    const double along = std::clamp(glm::dot(point - from, edge) / glm::dot(edge, edge), 0.0, 1.0);
+    best = std::min(best, glm::length(point - (from + along * edge)));
+  }
+  return best;
 }
 
 }  // namespace triwalk

@@ -34,10 +34,20 @@ const char* placementName(PlacementKind kind) {
   return "?";
 }
 
+const char* collapseCostName(CollapseCost cost) {
+  return cost == CollapseCost::ServedSamples ? "served-samples" : "centroid";
+}
+
+CollapseCost parseCollapseCost(const std::string& name) {
+  if (name == "served-samples") return CollapseCost::ServedSamples;
+  if (name == "centroid") return CollapseCost::Centroid;
+  throw InputError("--cost", "unknown cost '" + name + "' (use served-samples or centroid)");
+}
+
 const char* stopReasonName(StopReason reason) {
   switch (reason) {
     case StopReason::None: return "not stopped";
-    case StopReason::MaxError: return "the next collapse would exceed the error threshold";
+    case StopReason::MaxError: return "every collapse left would exceed the error threshold";
     case StopReason::TargetReached: return "reached the target sample count";
     case StopReason::NoValidCollapse: return "no valid collapse is left";
     case StopReason::Interrupted: return "interrupted";
@@ -45,15 +55,18 @@ const char* stopReasonName(StopReason reason) {
   return "?";
 }
 
-EdgeCollapseDecimator::EdgeCollapseDecimator(const ViewMesh& mesh, TriangleErrorSource& errors, DecimationOptions options,
+EdgeCollapseDecimator::EdgeCollapseDecimator(const ViewMesh& mesh, DecimationErrors errors, DecimationOptions options,
                                              ProgressReporter* costing)
     : positions_(mesh.positions()), triangles_(mesh.triangles()), alive_(mesh.triangles().size(), 1),
       incident_(mesh.positions().size()), isVertex_(mesh.positions().size(), 0), errors_(errors), options_(options) {
+  TRIWALK_CHECK(options.cost == CollapseCost::Centroid ? errors.triangles != nullptr : errors.samples != nullptr,
+                "the decimator needs the error source of its cost");
   for (size_t t = 0; t < triangles_.size(); ++t) {
     for (int v : triangles_[t]) incident_[size_t(v)].push_back(int(t));
   }
   for (int v : mesh.vertices()) isVertex_[size_t(v)] = 1;
   vertexCount_ = mesh.vertexCount();
+  if (options_.cost == CollapseCost::ServedSamples) serveInitialSamples(mesh, costing);
   std::set<Edge> edges;
   for (const Triangle& t : triangles_) {
     for (int e = 0; e < 3; ++e) {
@@ -132,34 +145,13 @@ bool EdgeCollapseDecimator::simulate(int a, int b, int placement, PlacementKind 
   std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
   if (common != opposite) return false;
 
-  // The boundary must not move.
   const std::vector<int> boundaryA = boundaryNeighbours(a), boundaryB = boundaryNeighbours(b);
   const bool onBoundaryA = !boundaryA.empty(), onBoundaryB = !boundaryB.empty();
   const bool boundaryEdge = shared.size() == 1;
   if (onBoundaryA && onBoundaryB && !boundaryEdge) return false;  // would pinch the mesh
-  if (onBoundaryA != onBoundaryB) {
-    const int boundaryVertex = onBoundaryA ? a : b;
-    const std::vector<int>& chain = onBoundaryA ? boundaryA : boundaryB;
-    if (chain.size() != 2) return false;
-    if (placement != boundaryVertex &&
-        !(onOpenSegment(boundaryVertex, chain[0], chain[1]) && onOpenSegment(placement, chain[0], chain[1]))) {
-      return false;
-    }
-  } else if (onBoundaryA && onBoundaryB) {
-    // Boundary chain outerA - a - b - outerB becomes outerA - p - outerB.
-    if (boundaryA.size() != 2 || boundaryB.size() != 2) return false;
-    const int outerA = boundaryA[0] == b ? boundaryA[1] : boundaryA[0];
-    const int outerB = boundaryB[0] == a ? boundaryB[1] : boundaryB[0];
-    if (outerA == outerB) return false;  // the mesh would lose its last area
-    if (placement == a) {
-      if (!onOpenSegment(b, a, outerB)) return false;
-    } else if (placement == b) {
-      if (!onOpenSegment(a, outerA, b)) return false;
-    } else if (!(onOpenSegment(a, outerA, outerB) && onOpenSegment(b, outerA, outerB) &&
-                 onOpenSegment(placement, outerA, outerB))) {
-      return false;
-    }
-  }
+  if (boundaryA.size() > 2 || boundaryB.size() > 2) return false;  // a vertex the boundary passes twice
+  const bool boundaryMoves = (onBoundaryA && placement != a) || (onBoundaryB && placement != b);
+  if (boundaryMoves && !boundaryMayShrink() && !keepsFixedBoundary(a, b, placement, boundaryA, boundaryB)) return false;
 
   // The updated triangles: every triangle of a or b but the edge's own,
   // with a and b replaced by the placement; all strictly counter-clockwise.
@@ -184,14 +176,155 @@ bool EdgeCollapseDecimator::simulate(int a, int b, int placement, PlacementKind 
     }
     plan.added.push_back(canonicalTriangle(updated));
   }
-  if (plan.added.empty()) return false;
-  // A canonical order makes the mean (a float sum) independent of
-  // triangle ids, i.e. of the history that led to this mesh.
+  // Without new triangles only an ear of the boundary goes (the edge's one
+  // triangle), and only where the boundary may shrink.
+  if (plan.added.empty() && !(boundaryMoves && boundaryMayShrink())) return false;
+  // A canonical order makes sums over them independent of triangle ids,
+  // i.e. of the history that led to this mesh.
   std::sort(plan.added.begin(), plan.added.end());
   std::vector<uint64_t> keys;
   for (const Triangle& t : plan.added) keys.push_back(tripleKey(t));
   std::sort(keys.begin(), keys.end());
-  return std::adjacent_find(keys.begin(), keys.end()) == keys.end();
+  if (std::adjacent_find(keys.begin(), keys.end()) != keys.end()) return false;
+  if (boundaryMoves && boundaryMayShrink() && !(staysInside(plan) && keepsEveryVertex(a, b, plan))) return false;
+  if (options_.cost == CollapseCost::ServedSamples) assignServedSamples(a, b, plan);
+  return true;
+}
+
+// The paper's rule (DESIGN): the boundary never moves. A boundary vertex
+// may be removed only where it lies on the straight segment between its
+// boundary neighbours, and the placement must lie on that segment.
+bool EdgeCollapseDecimator::keepsFixedBoundary(int a, int b, int placement, const std::vector<int>& boundaryA,
+                                               const std::vector<int>& boundaryB) const {
+  const bool onBoundaryA = !boundaryA.empty(), onBoundaryB = !boundaryB.empty();
+  if (onBoundaryA != onBoundaryB) {
+    const int boundaryVertex = onBoundaryA ? a : b;
+    const std::vector<int>& chain = onBoundaryA ? boundaryA : boundaryB;
+    return chain.size() == 2 && onOpenSegment(boundaryVertex, chain[0], chain[1]) &&
+           onOpenSegment(placement, chain[0], chain[1]);
+  }
+  // Boundary chain outerA - a - b - outerB becomes outerA - p - outerB.
+  if (boundaryA.size() != 2 || boundaryB.size() != 2) return false;
+  const int outerA = boundaryA[0] == b ? boundaryA[1] : boundaryA[0];
+  const int outerB = boundaryB[0] == a ? boundaryB[1] : boundaryB[0];
+  if (outerA == outerB) return false;  // the mesh would lose its last area
+  if (placement == a) return onOpenSegment(b, a, outerB);
+  if (placement == b) return onOpenSegment(a, outerA, b);
+  return onOpenSegment(a, outerA, outerB) && onOpenSegment(b, outerA, outerB) && onOpenSegment(placement, outerA, outerB);
+}
+
+// Where the boundary may shrink: the new triangles must lie inside the
+// removed ones (the region the collapse covers only loses area, so no
+// triangle can come to overlap the rest of the mesh or cross a wall the
+// mesh respected). The removed triangles form a disk (link condition);
+// every new edge must be an edge of its outline or a diagonal inside it:
+// crossing no outline edge, passing through no outline vertex, with its
+// midpoint inside a removed triangle.
+bool EdgeCollapseDecimator::staysInside(const Plan& plan) const {
+  std::set<std::pair<int, int>> directed;
+  for (int t : plan.removed) {
+    const Triangle& tri = triangles_[size_t(t)];
+    for (int e = 0; e < 3; ++e) directed.insert({tri[size_t(e)], tri[size_t((e + 1) % 3)]});
+  }
+  std::vector<std::pair<int, int>> outline;
+  for (const auto& [u, v] : directed) {
+    if (!directed.count({v, u})) outline.emplace_back(u, v);
+  }
+  for (const Triangle& t : plan.added) {
+    for (int e = 0; e < 3; ++e) {
+      const int u = t[size_t(e)], v = t[size_t((e + 1) % 3)];
+      if (directed.count({u, v}) || directed.count({v, u})) continue;  // an edge that was there
+      const glm::dvec2 pu = positions_[size_t(u)], pv = positions_[size_t(v)];
+      for (const auto& [x, y] : outline) {
+        const glm::dvec2 px = positions_[size_t(x)], py = positions_[size_t(y)];
+        if (x != u && x != v && orientation(pu, pv, px) == 0 && glm::dot(px - pu, px - pv) <= 0.0) return false;
+        if (x == u || x == v || y == u || y == v) continue;
+        const int o1 = orientation(pu, pv, px), o2 = orientation(pu, pv, py);
+        const int o3 = orientation(px, py, pu), o4 = orientation(px, py, pv);
+        if (o1 * o2 < 0 && o3 * o4 < 0) return false;
+      }
+      const glm::dvec2 midpoint = 0.5 * (pu + pv);
+      bool inside = false;
+      for (int r : plan.removed) {
+        const Triangle& tri = triangles_[size_t(r)];
+        inside |= distanceToTriangle(positions_[size_t(tri[0])], positions_[size_t(tri[1])], positions_[size_t(tri[2])],
+                                     midpoint) == 0.0;
+        if (inside) break;
+      }
+      if (!inside) return false;
+    }
+  }
+  return true;
+}
+
+// No vertex but the two collapsed may lose its last triangle.
+bool EdgeCollapseDecimator::keepsEveryVertex(int a, int b, const Plan& plan) const {
+  for (int t : plan.removed) {
+    for (int v : triangles_[size_t(t)]) {
+      if (v == a || v == b || v == plan.placement) continue;
+      const bool inAdded = std::any_of(plan.added.begin(), plan.added.end(), [&](const Triangle& added) {
+        return std::find(added.begin(), added.end(), v) != added.end();
+      });
+      const bool keepsOther = std::any_of(incident_[size_t(v)].begin(), incident_[size_t(v)].end(), [&](int other) {
+        return !std::binary_search(plan.removed.begin(), plan.removed.end(), other);
+      });
+      if (!inAdded && !keepsOther) return false;
+    }
+  }
+  return plan.removed.size() < size_t(triangleCount());
+}
+
+// The samples the changed triangles will serve, and where each goes.
+// Every sample is served by the triangle around it, or, outside the mesh
+// (where the boundary shrank), by the nearest triangle, as eval and the
+// viewer serve a position. Those are: the samples the removed triangles
+// served, the freed vertices (not the placement, which becomes a
+// reference), and samples outside the mesh that a new triangle is now
+// nearest to. Ties go to the first triangle in the (sorted) new ones,
+// then to the lowest existing triangle id.
+void EdgeCollapseDecimator::assignServedSamples(int a, int b, Plan& plan) const {
+  plan.served.clear();
+  plan.servedBy.clear();
+  for (int t : plan.removed) plan.served.insert(plan.served.end(), served_[size_t(t)].begin(), served_[size_t(t)].end());
+  for (int freed : {a, b}) {
+    if (freed != plan.placement) plan.served.push_back(freed);
+  }
+  auto nearestAdded = [&](glm::dvec2 point, double& distance) {
+    int home = -1;
+    distance = kInfinity;
+    for (size_t k = 0; k < plan.added.size() && distance > 0.0; ++k) {
+      const Triangle& t = plan.added[k];
+      const double d = distanceToTriangle(positions_[size_t(t[0])], positions_[size_t(t[1])], positions_[size_t(t[2])], point);
+      if (d < distance) distance = d, home = int(k);
+    }
+    return home;
+  };
+  for (int sample : outside_) {
+    if (std::binary_search(plan.removed.begin(), plan.removed.end(), home_[size_t(sample)])) continue;  // listed above
+    double distance;
+    nearestAdded(positions_[size_t(sample)], distance);
+    if (distance < homeDistance_[size_t(sample)]) plan.served.push_back(sample);
+  }
+  plan.served.erase(std::remove(plan.served.begin(), plan.served.end(), plan.placement), plan.served.end());
+  std::sort(plan.served.begin(), plan.served.end());
+  plan.servedDistance.clear();
+  for (int sample : plan.served) {
+    const glm::dvec2 point = positions_[size_t(sample)];
+    double distance;
+    int home = nearestAdded(point, distance);
+    if (distance > 0.0) {
+      // Outside the new triangles: an existing triangle may be nearer.
+      for (int t = 0; t < int(triangles_.size()); ++t) {
+        if (!alive_[size_t(t)] || std::binary_search(plan.removed.begin(), plan.removed.end(), t)) continue;
+        const Triangle& tri = triangles_[size_t(t)];
+        const double d =
+            distanceToTriangle(positions_[size_t(tri[0])], positions_[size_t(tri[1])], positions_[size_t(tri[2])], point);
+        if (d < distance) distance = d, home = -1 - t;
+      }
+    }
+    plan.servedBy.push_back(home);
+    plan.servedDistance.push_back(distance);
+  }
 }
 
 std::vector<std::pair<int, PlacementKind>> EdgeCollapseDecimator::candidates(int a, int b, EdgeState& state) const {
@@ -243,28 +376,94 @@ void EdgeCollapseDecimator::ensureErrors(const std::vector<Triangle>& triangles,
   }
   if (missing.empty()) return;
   std::vector<double> computed(missing.size());
-  if (progress) {
-    // In chunks, so that the first costing (thousands of errors) shows its
-    // progress and stops on Ctrl-C; each error is independent of the others.
-    constexpr size_t kChunk = 64;
-    progress->setTotal(missing.size());
-    for (size_t first = 0; first < missing.size(); first += kChunk) {
-      throwIfInterrupted();
-      const size_t count = std::min(kChunk, missing.size() - first);
-      errors_.computeErrors(std::span<const Triangle>(missing).subspan(first, count),
-                            std::span<double>(computed).subspan(first, count));
-      progress->advance(count);
-    }
-  } else {
-    errors_.computeErrors(missing, computed);
+  // In chunks when progress is shown (the first costing, thousands of
+  // errors), so that it reports and stops on Ctrl-C; each error is
+  // independent of the others.
+  const size_t chunk = progress ? 64 : missing.size();
+  if (progress) progress->setTotal(progress->done() + missing.size());
+  for (size_t first = 0; first < missing.size(); first += chunk) {
+    if (progress) throwIfInterrupted();
+    const size_t count = std::min(chunk, missing.size() - first);
+    errors_.triangles->computeErrors(std::span<const Triangle>(missing).subspan(first, count),
+                                     std::span<double>(computed).subspan(first, count));
+    if (progress) progress->advance(count);
   }
   for (size_t i = 0; i < missing.size(); ++i) cache_[tripleKey(missing[i])] = computed[i];
   statistics_.errorsComputed += missing.size();
 }
 
-// The cost of a collapse: the mean error of the updated triangles (paper
-// Fig. 4), weighted by area unless asked otherwise, since a triangle serves
-// the part of the walkthrough space it covers.
+void EdgeCollapseDecimator::ensureSampleErrors(const std::vector<SampleReconstruction>& requests, ProgressReporter* progress) {
+  std::vector<SampleReconstruction> missing;
+  std::unordered_map<SampleKey, char, SampleKeyHash> queued;
+  for (const SampleReconstruction& request : requests) {
+    const SampleKey key{tripleKey(request.references), request.destination};
+    if (sampleCache_.count(key) || !queued.emplace(key, 1).second) {
+      ++statistics_.cacheHits;
+      continue;
+    }
+    missing.push_back(request);
+  }
+  if (missing.empty()) return;
+  std::vector<double> computed(missing.size());
+  // In chunks when progress is shown (the first costing), so that it
+  // reports and stops on Ctrl-C; each error is independent of the others.
+  const size_t chunk = progress ? 64 : missing.size();
+  if (progress) progress->setTotal(progress->done() + missing.size());
+  for (size_t first = 0; first < missing.size(); first += chunk) {
+    if (progress) throwIfInterrupted();
+    const size_t count = std::min(chunk, missing.size() - first);
+    errors_.samples->computeReconstructionErrors(std::span<const SampleReconstruction>(missing).subspan(first, count),
+                                                 std::span<double>(computed).subspan(first, count));
+    if (progress) progress->advance(count);
+  }
+  for (size_t i = 0; i < missing.size(); ++i) {
+    sampleCache_[SampleKey{tripleKey(missing[i].references), missing[i].destination}] = computed[i];
+  }
+  statistics_.errorsComputed += missing.size();
+}
+
+double EdgeCollapseDecimator::sampleError(const Triangle& triangle, int sample) const {
+  return sampleCache_.at(SampleKey{tripleKey(triangle), sample});
+}
+
+// Every sample that is not a vertex is served by the triangle around it
+// (the nearest outside the mesh, when the mesh is not the dense one).
+void EdgeCollapseDecimator::serveInitialSamples(const ViewMesh& mesh, ProgressReporter* progress) {
+  home_.assign(positions_.size(), -1);
+  homeError_.assign(positions_.size(), 0.0);
+  homeDistance_.assign(positions_.size(), 0.0);
+  served_.assign(triangles_.size(), {});
+  std::vector<SampleReconstruction> requests;
+  int hint = -1;
+  for (int s = 0; s < int(positions_.size()); ++s) {
+    if (isVertex_[size_t(s)]) continue;
+    hint = mesh.locate(positions_[size_t(s)], hint);
+    home_[size_t(s)] = hint;
+    homeDistance_[size_t(s)] = mesh.distanceToTriangle(hint, positions_[size_t(s)]);
+    if (homeDistance_[size_t(s)] > 0.0) outside_.insert(s);
+    served_[size_t(hint)].push_back(s);
+    requests.push_back({sortedTriangle(triangles_[size_t(hint)]), s});
+  }
+  ensureSampleErrors(requests, progress);
+  for (const SampleReconstruction& request : requests) {
+    homeError_[size_t(request.destination)] = sampleError(request.references, request.destination);
+  }
+}
+
+double EdgeCollapseDecimator::servedSampleMeanError() const {
+  double sum = 0.0;
+  int count = 0;
+  for (size_t s = 0; s < home_.size(); ++s) {
+    if (home_[s] < 0) continue;
+    sum += homeError_[s];
+    ++count;
+  }
+  return count > 0 ? sum / double(count) : 0.0;
+}
+
+// The centroid cost of a collapse: the mean error of the updated triangles
+// (paper Fig. 4), weighted by area unless asked otherwise, since a
+// triangle serves the part of the walkthrough space it covers.
 double EdgeCollapseDecimator::meanError(const std::vector<Triangle>& triangles) {
   double sum = 0.0, weightSum = 0.0;
   for (const Triangle& t : triangles) {
@@ -277,8 +476,38 @@ double EdgeCollapseDecimator::meanError(const std::vector<Triangle>& triangles) 
 }
 
 double EdgeCollapseDecimator::triangleError(const Triangle& triangle) {
+  TRIWALK_CHECK(errors_.triangles != nullptr, "triangle errors need a triangle error source");
   ensureErrors({triangle});
   return cache_.at(tripleKey(triangle));
+}
+
+const Triangle& EdgeCollapseDecimator::servingTriangle(const Plan& plan, size_t i) const {
+  const int by = plan.servedBy[i];
+  return by >= 0 ? plan.added[size_t(by)] : triangles_[size_t(-1 - by)];
+}
+
+bool EdgeCollapseDecimator::boundaryMayShrink() const {
+  return options_.cost == CollapseCost::ServedSamples && !options_.fixedBoundary;
+}
+
+// Served samples: the increase of their total error (the freed vertices
+// count from zero, the placement leaves the sum), and the mean error of
+// the samples the new triangles serve. Centroid: the mean triangle error,
+// both times. Sums run in sample order, so the result does not depend on
+// the history that led to this mesh.
+std::pair<double, double> EdgeCollapseDecimator::evaluate(const Plan& plan) {
+  if (options_.cost == CollapseCost::Centroid) {
+    const double mean = meanError(plan.added);
+    return {mean, mean};
+  }
+  double after = 0.0, before = 0.0;
+  for (size_t i = 0; i < plan.served.size(); ++i) {
+    const int sample = plan.served[i];
+    after += sampleError(servingTriangle(plan, i), sample);
+    before += homeError_[size_t(sample)];
+  }
+  before += homeError_[size_t(plan.placement)];
+  return {after - before, after / double(plan.served.size())};
 }
 
 // Costs a batch of edges: every candidate collapse is simulated first, the
@@ -292,21 +521,37 @@ void EdgeCollapseDecimator::costEdges(const std::vector<Edge>& edges, ProgressRe
   std::vector<Candidate> plans;
   std::vector<EdgeState> states(edges.size());
   std::vector<Triangle> needed;
+  std::vector<SampleReconstruction> neededSamples;
   for (size_t i = 0; i < edges.size(); ++i) {
     const auto [a, b] = edges[i];
     for (const auto& [placement, kind] : candidates(a, b, states[i])) {
       Plan plan;
       if (!simulate(a, b, placement, kind, plan)) continue;
-      needed.insert(needed.end(), plan.added.begin(), plan.added.end());
+      if (options_.cost == CollapseCost::Centroid) {
+        needed.insert(needed.end(), plan.added.begin(), plan.added.end());
+      } else {
+        for (size_t k = 0; k < plan.served.size(); ++k) {
+          neededSamples.push_back({sortedTriangle(servingTriangle(plan, k)), plan.served[k]});
+        }
+      }
       plans.push_back({i, std::move(plan)});
     }
   }
-  ensureErrors(needed, progress);
+  if (options_.cost == CollapseCost::Centroid) {
+    ensureErrors(needed, progress);
+  } else {
+    ensureSampleErrors(neededSamples, progress);
+  }
   for (Candidate& candidate : plans) {
     EdgeState& state = states[candidate.edge];
-    const double cost = meanError(candidate.plan.added);
+    const auto [cost, error] = evaluate(candidate.plan);
+    if (options_.maxError > 0.0 && error > options_.maxError) {
+      state.lowestRefusedError = std::min(state.lowestRefusedError, error);
+      continue;
+    }
     if (cost < state.cost) {
       state.cost = cost;
+      state.error = error;
       state.plan = std::move(candidate.plan);
     }
   }
@@ -355,6 +600,7 @@ std::optional<Collapse> EdgeCollapseDecimator::peekNextCollapse() {
   collapse.placement = state.plan.placement;
   collapse.kind = state.plan.kind;
   collapse.cost = state.cost;
+  collapse.error = state.error;
   for (int t : state.plan.removed) collapse.removed.push_back(canonicalTriangle(triangles_[size_t(t)]));
   collapse.added = state.plan.added;
   std::sort(collapse.removed.begin(), collapse.removed.end());
@@ -381,6 +627,7 @@ void EdgeCollapseDecimator::apply(const Edge& edge, const EdgeState& state) {
   record.placement = plan.placement;
   record.kind = plan.kind;
   record.cost = state.cost;
+  record.error = state.error;
   for (int t : plan.removed) {
     alive_[size_t(t)] = 0;
     record.removed.push_back(canonicalTriangle(triangles_[size_t(t)]));
@@ -399,6 +646,45 @@ void EdgeCollapseDecimator::apply(const Edge& edge, const EdgeState& state) {
   std::sort(record.removed.begin(), record.removed.end());
   log_.push_back(std::move(record));
 
+  // Served samples move to the new triangles; the placement is a reference
+  // now. If it was served by a triangle outside the collapse (on a shared
+  // edge), that triangle's edges must be re-costed too.
+  int placementHome = -1;
+  std::set<int> gainedSamples;  // existing triangles that now serve samples outside the mesh
+  if (options_.cost == CollapseCost::ServedSamples) {
+    const int firstAdded = int(triangles_.size()) - int(plan.added.size());
+    served_.resize(triangles_.size());
+    for (int t : plan.removed) served_[size_t(t)].clear();
+    placementHome = home_[size_t(plan.placement)];
+    if (placementHome >= 0) {
+      auto& list = served_[size_t(placementHome)];
+      list.erase(std::remove(list.begin(), list.end(), plan.placement), list.end());
+      if (!alive_[size_t(placementHome)]) placementHome = -1;
+    }
+    home_[size_t(plan.placement)] = -1;
+    homeError_[size_t(plan.placement)] = 0.0;
+    for (size_t i = 0; i < plan.served.size(); ++i) {
+      const int sample = plan.served[i];
+      const int previous = home_[size_t(sample)];
+      if (previous >= 0 && alive_[size_t(previous)]) {  // an outside sample a new triangle is nearer to
+        auto& list = served_[size_t(previous)];
+        list.erase(std::remove(list.begin(), list.end(), sample), list.end());
+      }
+      const int home = plan.servedBy[i] >= 0 ? firstAdded + plan.servedBy[i] : -1 - plan.servedBy[i];
+      home_[size_t(sample)] = home;
+      homeError_[size_t(sample)] = sampleError(sortedTriangle(servingTriangle(plan, i)), sample);
+      homeDistance_[size_t(sample)] = plan.servedDistance[i];
+      served_[size_t(home)].push_back(sample);
+      if (home < firstAdded) gainedSamples.insert(home);
+      if (plan.servedDistance[i] > 0.0) {
+        outside_.insert(sample);
+      } else {
+        outside_.erase(sample);
+      }
+    }
+    outside_.erase(plan.placement);
+  }
+
   isVertex_[size_t(a)] = isVertex_[size_t(b)] = 0;
   isVertex_[size_t(plan.placement)] = 1;
   vertexCount_ -= 1;
@@ -413,6 +699,8 @@ void EdgeCollapseDecimator::apply(const Edge& edge, const EdgeState& state) {
   std::set<Edge> affected;
   std::vector<int> around = neighboursOf(plan.placement);
   around.push_back(plan.placement);
+  if (placementHome >= 0) gainedSamples.insert(placementHome);
+  for (int t : gainedSamples) around.insert(around.end(), triangles_[size_t(t)].begin(), triangles_[size_t(t)].end());
   for (int w : around) {
     for (int x : neighboursOf(w)) affected.insert({std::min(w, x), std::max(w, x)});
   }
@@ -434,11 +722,7 @@ bool EdgeCollapseDecimator::step() {
   }
   const HeapEntry* top = peekValid();
   if (!top) {
-    stopReason_ = StopReason::NoValidCollapse;
-    return false;
-  }
-  if (options_.maxError > 0.0 && top->cost > options_.maxError) {
-    stopReason_ = StopReason::MaxError;
+    stopReason_ = std::isfinite(lowestRefusedError()) ? StopReason::MaxError : StopReason::NoValidCollapse;
     return false;
   }
   const Edge edge{top->first, top->second};
@@ -467,14 +751,20 @@ StopReason EdgeCollapseDecimator::run(ProgressReporter* progress) {
   return stopReason_;
 }
 
+double EdgeCollapseDecimator::lowestRefusedError() const {
+  double lowest = kInfinity;
+  for (const auto& [edge, state] : edges_) lowest = std::min(lowest, state.lowestRefusedError);
+  return lowest;
+}
+
 size_t EdgeCollapseDecimator::expectedRemainingCollapses() const {
   const int floorCount = std::max(3, options_.targetSamples);
   size_t remaining = size_t(std::max(0, vertexCount_ - floorCount));
   const size_t window = 32;
   if (options_.maxError > 0.0 && log_.size() > window) {
-    const double rise = log_.back().cost - log_[log_.size() - 1 - window].cost;
+    const double rise = log_.back().error - log_[log_.size() - 1 - window].error;
     if (rise > 0.0) {
-      const double toThreshold = std::max(0.0, options_.maxError - log_.back().cost);
+      const double toThreshold = std::max(0.0, options_.maxError - log_.back().error);
       remaining = std::min(remaining, size_t(toThreshold / rise * double(window)) + 1);
     }
   }

@@ -1,20 +1,33 @@
 #pragma once
 // Edge-collapse decimation of a triangulated set of views: the paper's
-// Sec. III-C with the definitions of DESIGN.md ("Triangle error and
-// decimation"), shaped like meshoptimizer's simplifier (small steps over
-// flat arrays) with libigl's lazy-deletion heap.
+// Sec. III-C with the definitions of docs/DESIGN.md ("Selection"), shaped
+// like meshoptimizer's simplifier (small steps over flat arrays) with
+// libigl's lazy-deletion heap.
 //
 //   cost every edge (v1, v2): for each placement p among v1, v2 and the
 //     free dense sample nearest the midpoint (optionally every free sample
 //     inside the two one-rings) whose collapse (v1, v2) -> p is valid,
-//     the mean error of the triangles around p afterwards (paper Fig. 4);
-//     the edge's cost is the lowest, its placement that p
+//     the cost of the mesh after it; the edge's cost is the lowest, its
+//     placement that p
 //   repeat:
 //     pop the cheapest edge (skip entries whose stamp is stale), re-check
-//     its cost (a far sample may have been freed or taken), stop if it
-//     exceeds the threshold, collapse it, log it, and re-cost every edge
-//     whose updated triangles changed: those touching p or a neighbour of p
-//   until the error threshold, the target sample count, or no valid collapse.
+//     its cost (a far sample may have been freed or taken), collapse it,
+//     log it, and re-cost every edge whose updated triangles changed:
+//     those touching p or a neighbour of p
+//   until the target sample count, or no valid collapse is left under
+//   the error threshold.
+//
+// Two costs (CollapseCost):
+//   served samples (default): every dense sample that is not a reference
+//     is served by the triangle around it, as a walker standing there
+//     would be; a collapse costs the increase of the total reconstruction
+//     error over the samples its new triangles serve (those freed by it
+//     included). Greedy on this cost removes, at each step, the reference
+//     whose loss the walkthrough feels least, measured where it is felt.
+//     The threshold applies to the mean error of those samples.
+//   centroid (the paper's): the mean error of the updated triangles, each
+//     measured at one destination near its centroid, weighted by area
+//     unless asked otherwise; the threshold applies to that mean.
 //
 // A collapse is valid only if the result is a manifold planar
 // triangulation covering the same region:
@@ -24,18 +37,21 @@
 //   - the boundary never moves: a boundary vertex may be removed only where
 //     it lies on the straight segment between its boundary neighbours, and p
 //     must lie on that segment (hull corners stay).
-// Triangle errors are cached by sorted vertex triple. Results do not
-// depend on the thread count: only the error batches run in parallel.
+// Errors are cached (triangles by sorted vertex triple, served samples by
+// triangle and sample). Results do not depend on the thread count: only
+// the error batches run in parallel.
 
 #include "core/planar_geometry.h"
 #include "core/triangle_error.h"
 #include "core/view_mesh.h"
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <map>
 #include <optional>
 #include <queue>
+#include <set>
 #include <unordered_map>
 #include <vector>
 
@@ -55,7 +71,8 @@ struct Collapse {
   int first = -1, second = -1;  // the edge (sample indices)
   int placement = -1;           // the sample that replaces them
   PlacementKind kind = PlacementKind::First;
-  double cost = 0.0;
+  double cost = 0.0;   // what ranked it (see CollapseCost)
+  double error = 0.0;  // what the threshold is compared with (see CollapseCost)
   std::vector<Triangle> removed;
   std::vector<Triangle> added;
 };
@@ -63,16 +80,33 @@ struct Collapse {
 enum class StopReason { None, MaxError, TargetReached, NoValidCollapse, Interrupted };
 const char* stopReasonName(StopReason reason);
 
+enum class CollapseCost { ServedSamples, Centroid };
+const char* collapseCostName(CollapseCost cost);
+// Parses "served-samples" or "centroid"; throws InputError.
+CollapseCost parseCollapseCost(const std::string& name);
+
 struct DecimationOptions {
-  double maxError = 1.85;        // stop before a collapse costing more; <= 0: no threshold
+  double maxError = 1.85;        // no collapse whose error exceeds this; <= 0: no threshold
   int targetSamples = 0;         // stop at this many samples; 0: no target
   bool oneRingCandidates = false;
-  bool areaWeightedCost = true;  // false: the paper's plain mean over the updated triangles
+  CollapseCost cost = CollapseCost::ServedSamples;
+  // Served-sample cost: keep the paper's fixed boundary instead of letting
+  // it shrink (the centroid cost always keeps it: it cannot price what
+  // leaves the mesh).
+  bool fixedBoundary = false;
+  bool areaWeightedCost = true;  // centroid cost: false for the paper's plain mean over the updated triangles
+};
+
+// Where the costs come from: triangle errors for the centroid cost,
+// reconstruction errors of dense samples for the served-sample cost.
+struct DecimationErrors {
+  TriangleErrorSource* triangles = nullptr;
+  ReconstructionErrorSource* samples = nullptr;
 };
 
 struct DecimationStatistics {
-  uint64_t errorsComputed = 0;   // triangle errors evaluated
-  uint64_t cacheHits = 0;        // triangle errors served from the cache
+  uint64_t errorsComputed = 0;   // triangle (or served-sample) errors evaluated
+  uint64_t cacheHits = 0;        // errors served from the cache
   uint64_t staleEntriesSkipped = 0;
   uint64_t edgesCosted = 0;
   uint64_t collapseChecksFailed = 0;  // popped entries whose cost had changed
@@ -81,8 +115,9 @@ struct DecimationStatistics {
 class EdgeCollapseDecimator {
 public:
   // Costs every edge up front (the long part on a dense mesh): costing, if
-  // given, counts the triangle errors it computes; Ctrl-C throws Interrupted.
-  EdgeCollapseDecimator(const ViewMesh& mesh, TriangleErrorSource& errors, DecimationOptions options,
+  // given, counts the errors it computes; Ctrl-C throws Interrupted. The
+  // cost's error source must be given.
+  EdgeCollapseDecimator(const ViewMesh& mesh, DecimationErrors errors, DecimationOptions options,
                         ProgressReporter* costing = nullptr);
 
   // Performs the cheapest valid collapse unless a stop condition holds;
@@ -96,19 +131,25 @@ public:
   std::optional<Collapse> peekNextCollapse();
   // Its cost, +inf if there is none.
   double nextCost();
+  // After stopping at the threshold: the lowest error of a collapse it
+  // refused (+inf if none was refused).
+  double lowestRefusedError() const;
   // Whether collapsing the edge (first, second) into placement is valid now.
   bool isValidCollapse(int first, int second, int placement) const;
   StopReason stopReason() const { return stopReason_; }
   // For the time left: the collapses to the target count, or, under an
-  // error threshold, until the cost reaches it at the pace of the last 32.
+  // error threshold, until the error reaches it at the pace of the last 32.
   size_t expectedRemainingCollapses() const;
   int vertexCount() const { return vertexCount_; }
   int triangleCount() const;
   ViewMesh mesh() const;
   const std::vector<Collapse>& log() const { return log_; }
   const DecimationStatistics& statistics() const { return statistics_; }
-  // Error of a triangle, from the cache or computed.
+  // Error of a triangle, from the cache or computed (centroid cost).
   double triangleError(const Triangle& triangle);
+  // Served-sample cost: the mean error of the dense samples that are not
+  // references, each from the triangle serving it.
+  double servedSampleMeanError() const;
 
 private:
   struct Plan {
@@ -116,13 +157,26 @@ private:
     PlacementKind kind = PlacementKind::First;
     std::vector<int> removed;         // triangle ids
     std::vector<Triangle> added;
+    std::vector<int> served;          // served-sample cost: the samples whose triangle changes
+    std::vector<int> servedBy;        // per served sample: index into added, or -1 - id of an existing triangle
+    std::vector<double> servedDistance;  // from the sample to that triangle (0 inside)
   };
   struct EdgeState {
     uint64_t stamp = 0;
     double cost = std::numeric_limits<double>::infinity();
+    double error = 0.0;
+    double lowestRefusedError = std::numeric_limits<double>::infinity();  // over the threshold
     Plan plan;
     int midpointSample = -1;          // the free sample nearest the midpoint
     double midpointDistance = 0.0;
+  };
+  struct SampleKey {
+    uint64_t triangle;  // tripleKey of the sorted triangle
+    int sample;
+    bool operator==(const SampleKey&) const = default;
+  };
+  struct SampleKeyHash {
+    size_t operator()(const SampleKey& key) const { return std::hash<uint64_t>()(key.triangle * 1000003u + uint64_t(key.sample)); }
   };
   struct HeapEntry {
     double cost;
@@ -141,10 +195,22 @@ private:
   std::vector<int> boundaryNeighbours(int vertex) const;
   bool onOpenSegment(int sample, int from, int to) const;
   bool simulate(int a, int b, int placement, PlacementKind kind, Plan& plan) const;
+  bool boundaryMayShrink() const;
+  bool keepsFixedBoundary(int a, int b, int placement, const std::vector<int>& boundaryA,
+                          const std::vector<int>& boundaryB) const;
+  bool staysInside(const Plan& plan) const;
+  bool keepsEveryVertex(int a, int b, const Plan& plan) const;
+  const Triangle& servingTriangle(const Plan& plan, size_t i) const;
   std::vector<std::pair<int, PlacementKind>> candidates(int a, int b, EdgeState& state) const;
+  void assignServedSamples(int a, int b, Plan& plan) const;
   void costEdges(const std::vector<Edge>& edges, ProgressReporter* progress = nullptr);
   void ensureErrors(const std::vector<Triangle>& triangles, ProgressReporter* progress = nullptr);
+  void ensureSampleErrors(const std::vector<SampleReconstruction>& requests, ProgressReporter* progress = nullptr);
+  double sampleError(const Triangle& triangle, int sample) const;
   double meanError(const std::vector<Triangle>& triangles);
+  // (cost, error) of a simulated collapse.
+  std::pair<double, double> evaluate(const Plan& plan);
+  void serveInitialSamples(const ViewMesh& mesh, ProgressReporter* progress);
   const HeapEntry* peekValid();
   void apply(const Edge& edge, const EdgeState& state);
 
@@ -154,9 +220,17 @@ private:
   std::vector<std::vector<int>> incident_;  // alive triangles of each sample
   std::vector<char> isVertex_;
   int vertexCount_ = 0;
-  TriangleErrorSource& errors_;
+  DecimationErrors errors_;
   DecimationOptions options_;
-  std::unordered_map<uint64_t, double> cache_;
+  std::unordered_map<uint64_t, double> cache_;  // triangle errors by tripleKey
+  // Served-sample cost: the triangle serving each sample (-1 for
+  // references), its error from there, and each triangle's samples.
+  std::vector<int> home_;
+  std::vector<double> homeError_;
+  std::vector<double> homeDistance_;  // 0 inside the home triangle
+  std::set<int> outside_;             // samples outside the mesh (where its boundary shrank)
+  std::vector<std::vector<int>> served_;
+  std::unordered_map<SampleKey, double, SampleKeyHash> sampleCache_;
   std::map<Edge, EdgeState> edges_;
   std::priority_queue<HeapEntry, std::vector<HeapEntry>, std::greater<HeapEntry>> heap_;
   uint64_t nextStamp_ = 1;

@@ -37,6 +37,19 @@ PairedComparison compareProbeErrors(const std::vector<double>& candidate, const 
   return comparison;
 }
 
+std::vector<double> probeErrors(const ViewMesh& mesh, const DatasetTriangleErrors& errors, std::vector<int>* triangles) {
+  const Dataset& dataset = errors.dataset();
+  std::vector<int> located(size_t(dataset.probeCount()));
+  std::vector<double> result(located.size());
+  for (int p = 0; p < dataset.probeCount(); ++p) located[size_t(p)] = mesh.locate(glm::dvec2(dataset.probe(p).position));
+  tbb::parallel_for(0, dataset.probeCount(), [&](int p) {
+    const Triangle& triangle = mesh.triangles()[size_t(located[size_t(p)])];
+    result[size_t(p)] = errors.errorAt(triangle, dataset.probe(p).position, errors.probeDisplay(p)).total;
+  });
+  if (triangles) *triangles = std::move(located);
+  return result;
+}
+
 MethodEvaluation evaluateMesh(const std::string& method, const ViewMesh& mesh, DatasetTriangleErrors& errors) {
   MethodEvaluation evaluation;
   evaluation.method = method;
@@ -46,16 +59,7 @@ MethodEvaluation evaluateMesh(const std::string& method, const ViewMesh& mesh, D
   errors.computeErrors(mesh.triangles(), evaluation.triangleErrors);
   meanAndDeviation(evaluation.triangleErrors, evaluation.meanError, evaluation.stdError);
 
-  const Dataset& dataset = errors.dataset();
-  evaluation.probeErrors.resize(size_t(dataset.probeCount()));
-  evaluation.probeTriangles.resize(size_t(dataset.probeCount()));
-  for (int p = 0; p < dataset.probeCount(); ++p) {
-    evaluation.probeTriangles[size_t(p)] = mesh.locate(glm::dvec2(dataset.probe(p).position));
-  }
-  tbb::parallel_for(0, dataset.probeCount(), [&](int p) {
-    const Triangle& triangle = mesh.triangles()[size_t(evaluation.probeTriangles[size_t(p)])];
-    evaluation.probeErrors[size_t(p)] = errors.errorAt(triangle, dataset.probe(p).position, errors.probeDisplay(p)).total;
-  });
+  evaluation.probeErrors = probeErrors(mesh, errors, &evaluation.probeTriangles);
   meanAndDeviation(evaluation.probeErrors, evaluation.probeMeanError, evaluation.probeStdError);
   return evaluation;
 }

@@ -26,6 +26,11 @@ struct MethodEvaluation {
 
 MethodEvaluation evaluateMesh(const std::string& method, const ViewMesh& mesh, DatasetTriangleErrors& errors);
 
+// The error at every probe only (no triangle errors), each reconstructed
+// from the triangle around it; triangles, if given, receives those.
+std::vector<double> probeErrors(const ViewMesh& mesh, const DatasetTriangleErrors& errors,
+                                std::vector<int>* triangles = nullptr);
+
 // Mean and population standard deviation.
 void meanAndDeviation(const std::vector<double>& values, double& mean, double& deviation);
 

@@ -24,6 +24,10 @@ std::vector<Triangle> delaunayTriangles(std::span<const glm::dvec2> points);
 // -1 clockwise, 0 collinear.
 int orientation(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c);
 
+// Distance from point to the closed counter-clockwise triangle (a, b, c):
+// exactly 0 inside or on its edges (exact predicate), else to the nearest edge.
+double distanceToTriangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, glm::dvec2 point);
+
 // Rotates a triangle to start at its smallest index (same orientation).
 Triangle canonicalTriangle(Triangle triangle);
 

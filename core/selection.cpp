@@ -75,6 +75,7 @@ void writeSelection(const std::filesystem::path& path, const Selection& selectio
                             {"placement", dataset.sample(c.placement).id},
                             {"kind", placementName(c.kind)},
                             {"cost", c.cost},
+                            {"error", c.error},
                             {"removed", trianglesToJson(c.removed, dataset)},
                             {"added", trianglesToJson(c.added, dataset)}};
     if (c.kind != PlacementKind::Relocation) entry["second"] = dataset.sample(c.second).id;
@@ -141,6 +142,7 @@ Selection readSelection(const std::filesystem::path& path, const Dataset& datase
       if (c.kind != PlacementKind::Relocation) c.second = reader.sample(entry.json().at("second"), where + "second");
       c.placement = reader.sample(entry.json().at("placement"), where + "placement");
       c.cost = entry.number("cost");
+      c.error = entry.numberOr("error", c.cost);
       c.removed = reader.triangles(entry, "removed");
       c.added = reader.triangles(entry, "added");
       selection.collapses.push_back(std::move(c));

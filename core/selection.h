@@ -11,12 +11,14 @@
 //   "samples": [ids], "triangles": [[id, id, id], ...]        (counter-clockwise)
 //   "initial_triangles": [...],
 //   "collapses": [{"first": id, "second": id, "placement": id, "kind": "midpoint",
-//                  "cost": 0.41, "removed": [[...]], "added": [[...]]}, ...,
+//                  "cost": 0.41, "error": 1.2, "removed": [[...]], "added": [[...]]}, ...,
 //                 {"first": id, "placement": id, "kind": "relocation", "cost": 1.56, ...}]
 // }
 // The log's collapses lead from the dense triangulation to the decimated
 // mesh; relocations (the refinement after it, no "second") follow them and
 // keep the sample count; their cost is the mean dense-sample error after.
+// A collapse's "error" is what the threshold was compared with (see
+// CollapseCost; the cost when absent).
 // Ids are the data set's sample ids; in memory everything is sample indices.
 
 #include "core/dataset.h"

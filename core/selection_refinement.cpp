@@ -148,6 +148,7 @@ RefinementResult refineSelection(std::span<const glm::dvec2> positions, const st
       move.placement = candidates[size_t(best)];
       move.kind = PlacementKind::Relocation;
       move.cost = bestObjective;
+      move.error = bestObjective;
       move.removed = without(mesh.triangles(), next.triangles());
       move.added = without(next.triangles(), mesh.triangles());
       result.moves.push_back(std::move(move));

@@ -123,8 +123,8 @@ ReconstructionError DatasetTriangleErrors::errorAt(std::span<const int> referenc
 double DatasetTriangleErrors::sampleError(const Triangle& triangle, int destination) {
   const glm::vec3 position = dataset_.sample(destination).position;
   const DestinationCamera camera = DestinationCamera::panorama(position, settings_.width, settings_.width / 2);
-  std::shared_ptr<const WarpLayer> layers[3];
-  const WarpLayer* pointers[3];
+  std::shared_ptr<const CompactLayer> layers[3];
+  const CompactLayer* pointers[3];
   glm::vec3 sourcePositions[3];
   for (int k = 0; k < 3; ++k) {
     const WarpSource& source = *sources_[size_t(triangle[size_t(k)])];
@@ -140,7 +140,7 @@ double DatasetTriangleErrors::sampleError(const Triangle& triangle, int destinat
   tbb::parallel_for(0, truth.height, [&](int y) {
     for (int x = 0; x < truth.width; ++x) {
       const size_t i = size_t(y) * size_t(truth.width) + size_t(x);
-      const BlendedPixel pixel = blendPixel(pointers, weights, i, settings_.synthesis.blend);
+      const BlendedPixel pixel = blendPixelOf<CompactLayer>(pointers, weights, i, settings_.synthesis.blend);
       accumulator.add(y, displayColorFast(pixel.color), pixel.hole, truth.pixels[i]);
     }
   });
@@ -191,6 +191,36 @@ void CachingTriangleErrors::computeErrors(std::span<const Triangle> triangles, s
   for (size_t j = 0; j < missing.size(); ++j) {
     errors[missingAt[j]] = computed[j];
     known_[sortedTriangle(missing[j])] = computed[j];
+  }
+}
+
+}  // namespace triwalk
+
+namespace triwalk {
+
+void CachingReconstructionErrors::computeReconstructionErrors(std::span<const SampleReconstruction> requests,
+                                                              std::span<double> errors) {
+  std::vector<SampleReconstruction> missing;
+  std::vector<size_t> missingAt;
+  {
+    std::lock_guard lock(mutex_);
+    for (size_t i = 0; i < requests.size(); ++i) {
+      const auto known = known_.find(requests[i]);
+      if (known != known_.end()) {
+        errors[i] = known->second;
+      } else {
+        missing.push_back(requests[i]);
+        missingAt.push_back(i);
+      }
+    }
+  }
+  if (missing.empty()) return;
+  std::vector<double> computed(missing.size());
+  source_.computeReconstructionErrors(missing, computed);
+  std::lock_guard lock(mutex_);
+  for (size_t j = 0; j < missing.size(); ++j) {
+    errors[missingAt[j]] = computed[j];
+    known_[missing[j]] = computed[j];
   }
 }
 

@@ -60,7 +60,7 @@ TriangleDestinations parseTriangleDestinations(const std::string& name);
 
 struct TriangleErrorSettings {
   int width = 256;  // panorama width the errors are computed at
-  size_t layerCacheBytes = size_t(1) << 30;  // warped layers kept for reuse
+  size_t layerCacheBytes = defaultLayerCacheBytes();  // warped layers kept for reuse
   TriangleDestinations destinations = TriangleDestinations::Centroid;
   SynthesisOptions synthesis;
   ErrorOptions error;
@@ -124,6 +124,19 @@ private:
   TriangleErrorSource& source_;
   std::mutex mutex_;
   std::map<Triangle, double> known_;  // by sorted vertices
+};
+
+// The same for dense-sample reconstructions: shared by the decimation, the
+// refinement after it and the viewer's decimators. Thread-safe.
+class CachingReconstructionErrors final : public ReconstructionErrorSource {
+public:
+  explicit CachingReconstructionErrors(ReconstructionErrorSource& source) : source_(source) {}
+  void computeReconstructionErrors(std::span<const SampleReconstruction> requests, std::span<double> errors) override;
+
+private:
+  ReconstructionErrorSource& source_;
+  std::mutex mutex_;
+  std::map<SampleReconstruction, double> known_;
 };
 
 }  // namespace triwalk

@@ -98,16 +98,8 @@ bool ViewMesh::contains(int triangle, glm::dvec2 point) const {
 }
 
 double ViewMesh::distanceToTriangle(int triangle, glm::dvec2 point) const {
-  if (contains(triangle, point)) return 0.0;
   const Triangle& t = triangles_[size_t(triangle)];
-  double best = std::numeric_limits<double>::max();
-  for (int e = 0; e < 3; ++e) {
-    const glm::dvec2 a = position(t[size_t(e)]), b = position(t[size_t((e + 1) % 3)]);
-    const glm::dvec2 ab = b - a;
-    const double along = std::clamp(glm::dot(point - a, ab) / glm::dot(ab, ab), 0.0, 1.0);
-    best = std::min(best, glm::length(point - (a + along * ab)));
-  }
-  return best;
+  return triwalk::distanceToTriangle(position(t[0]), position(t[1]), position(t[2]), point);
 }
 
 int ViewMesh::locate(glm::dvec2 point, int hint) const {

@@ -118,6 +118,11 @@ struct WarpLayer {
   std::vector<uint8_t> covered;  // 1 where the source put something
   uint64_t trianglesRasterized = 0;
   WarpTimings timings;
+
+  // The per-pixel view the blend reads (see blendPixelOf).
+  bool coveredAt(size_t pixel) const { return covered[pixel] != 0; }
+  float distanceAt(size_t pixel) const { return distance.pixels[pixel]; }
+  glm::vec3 colorAt(size_t pixel) const { return color.pixels[pixel]; }
 };
 
 WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destination, WarpMethod method);

@@ -1,9 +1,21 @@
 #include "core/warp_layer_cache.h"
 
+#include <unistd.h>
+
+#include <algorithm>
+#include <limits>
+
 namespace triwalk {
 
-size_t layerBytes(const WarpLayer& layer) {
-  return layer.color.pixelCount() * sizeof(glm::vec3) + layer.distance.pixelCount() * sizeof(float) + layer.covered.size();
+CompactLayer::CompactLayer(const WarpLayer& layer) : values_(4 * layer.covered.size()) {
+  const uint16_t notCovered = Imath::half(std::numeric_limits<float>::quiet_NaN()).bits();
+  for (size_t i = 0; i < layer.covered.size(); ++i) {
+    const glm::vec3 color = layer.color.pixels[i];
+    values_[4 * i + 0] = Imath::half(color.r).bits();
+    values_[4 * i + 1] = Imath::half(color.g).bits();
+    values_[4 * i + 2] = Imath::half(color.b).bits();
+    values_[4 * i + 3] = layer.covered[i] ? Imath::half(layer.distance.pixels[i]).bits() : notCovered;
+  }
 }
 
 size_t WarpLayerCache::bytes() const {
@@ -11,7 +23,7 @@ size_t WarpLayerCache::bytes() const {
   return bytes_;
 }
 
-std::shared_ptr<const WarpLayer> WarpLayerCache::get(int source, int destination, const std::function<WarpLayer()>& make) {
+std::shared_ptr<const CompactLayer> WarpLayerCache::get(int source, int destination, const std::function<WarpLayer()>& make) {
   const Key key = (uint64_t(uint32_t(source)) << 32) | uint32_t(destination);
   {
     std::lock_guard lock(mutex_);
@@ -23,19 +35,25 @@ std::shared_ptr<const WarpLayer> WarpLayerCache::get(int source, int destination
     }
     ++misses_;
   }
-  auto layer = std::make_shared<const WarpLayer>(make());
+  auto layer = std::make_shared<const CompactLayer>(make());
   std::lock_guard lock(mutex_);
   const auto found = index_.find(key);
   if (found != index_.end()) return found->second->second;  // another thread made it meanwhile
   recency_.emplace_front(key, layer);
   index_[key] = recency_.begin();
-  bytes_ += layerBytes(*layer);
+  bytes_ += layer->bytes();
   while (bytes_ > budgetBytes_ && recency_.size() > 1) {
-    bytes_ -= layerBytes(*recency_.back().second);
+    bytes_ -= recency_.back().second->bytes();
     index_.erase(recency_.back().first);
     recency_.pop_back();
   }
   return layer;
+}
+
+size_t defaultLayerCacheBytes() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGE_SIZE);
+  const size_t physical = pages > 0 && pageSize > 0 ? size_t(pages) * size_t(pageSize) : size_t(4) << 30;
+  return std::clamp(physical / 3, size_t(1) << 30, size_t(16) << 30);
 }
 
 }  // namespace triwalk

@@ -45,6 +45,17 @@ private:
   std::vector<glm::dvec2> positions_;
 };
 
+// The paper's centroid cost, with a threshold (0: none) and a target.
+DecimationOptions centroidOptions(double maxError = 0.0, int target = 0) {
+  DecimationOptions options;
+  options.maxError = maxError;
+  options.targetSamples = target;
+  options.cost = CollapseCost::Centroid;
+  return options;
+}
+
+DecimationErrors fromTriangles(TriangleErrorSource& errors) { return {&errors, nullptr}; }
+
 double signedArea(const ViewMesh& mesh) {
   double area = 0.0;
   for (const Triangle& t : mesh.triangles()) {
@@ -88,7 +99,7 @@ TEST_CASE("a collapse that violates the link condition is refused") {
   const ViewMesh mesh(positions, triangles);
   checkValidMesh(mesh);
   SyntheticErrors errors(positions);
-  EdgeCollapseDecimator decimator(mesh, errors, DecimationOptions{0.0, 3, false});
+  EdgeCollapseDecimator decimator(mesh, fromTriangles(errors), centroidOptions(0.0, 3));
   CHECK_FALSE(decimator.isValidCollapse(v1, v2, v1));
   CHECK_FALSE(decimator.isValidCollapse(v1, v2, v2));
   // The same kind of collapse where the link condition holds is allowed.
@@ -107,7 +118,7 @@ TEST_CASE("a collapse that flips a triangle is refused") {
     const ViewMesh mesh(positions, triangles);
     checkValidMesh(mesh);
     SyntheticErrors errors(positions);
-    EdgeCollapseDecimator decimator(mesh, errors, DecimationOptions{0.0, 3, false});
+    EdgeCollapseDecimator decimator(mesh, fromTriangles(errors), centroidOptions(0.0, 3));
     CHECK_FALSE(decimator.isValidCollapse(v1, v2, v2));
   }
   // With A and D moved out to make the ring convex, the same collapse is fine.
@@ -115,7 +126,7 @@ TEST_CASE("a collapse that flips a triangle is refused") {
   positions[D] = {1, -1};
   const ViewMesh convex(positions, triangles);
   SyntheticErrors errors(positions);
-  EdgeCollapseDecimator decimator(convex, errors, DecimationOptions{0.0, 3, false});
+  EdgeCollapseDecimator decimator(convex, fromTriangles(errors), centroidOptions(0.0, 3));
   CHECK(decimator.isValidCollapse(v1, v2, v2));
 }
 
@@ -127,7 +138,7 @@ TEST_CASE("boundary: corners never move, straight boundary vertices may go, the 
   const std::vector<glm::dvec2> positions = grid(5, 3);
   const ViewMesh initial = ViewMesh::delaunay(positions, {}, "grid");
   SyntheticErrors errors(positions);
-  EdgeCollapseDecimator decimator(initial, errors, DecimationOptions{0.0, 3, false});
+  EdgeCollapseDecimator decimator(initial, fromTriangles(errors), centroidOptions(0.0, 3));
   while (decimator.step()) {
   }
   CHECK(decimator.stopReason() == StopReason::NoValidCollapse);
@@ -140,7 +151,7 @@ TEST_CASE("boundary: corners never move, straight boundary vertices may go, the 
 
   // Boundary vertex (2,0) = 6 lies between (1,0) and (3,0): it may slide
   // along the boundary onto (3,0) = 9, but never inward onto (2,1) = 7.
-  EdgeCollapseDecimator fresh(initial, errors, DecimationOptions{0.0, 3, false});
+  EdgeCollapseDecimator fresh(initial, fromTriangles(errors), centroidOptions(0.0, 3));
   CHECK(fresh.isValidCollapse(6, 9, 9));
   CHECK_FALSE(fresh.isValidCollapse(6, 7, 7));
   CHECK(fresh.isValidCollapse(6, 7, 6));
@@ -153,7 +164,7 @@ TEST_CASE("replaying the log to any prefix gives a valid mesh, forward and backw
   const std::vector<glm::dvec2> positions = grid(6, 5);
   const ViewMesh initial = ViewMesh::delaunay(positions, {}, "grid");
   SyntheticErrors errors(positions);
-  EdgeCollapseDecimator decimator(initial, errors, DecimationOptions{0.0, 6, false});
+  EdgeCollapseDecimator decimator(initial, fromTriangles(errors), centroidOptions(0.0, 6));
   decimator.run();
   CHECK(decimator.stopReason() == StopReason::TargetReached);
   CHECK(decimator.vertexCount() == 6);
@@ -176,10 +187,10 @@ TEST_CASE("stale heap entries are skipped: each collapse is the cheapest a fresh
   const std::vector<glm::dvec2> positions = grid(6, 5);
   const ViewMesh initial = ViewMesh::delaunay(positions, {}, "grid");
   SyntheticErrors errors(positions);
-  EdgeCollapseDecimator incremental(initial, errors, DecimationOptions{0.0, 5, false});
+  EdgeCollapseDecimator incremental(initial, fromTriangles(errors), centroidOptions(0.0, 5));
   int steps = 0;
   while (true) {
-    EdgeCollapseDecimator fresh(incremental.mesh(), errors, DecimationOptions{0.0, 5, false});
+    EdgeCollapseDecimator fresh(incremental.mesh(), fromTriangles(errors), centroidOptions(0.0, 5));
     const std::optional<Collapse> expected = fresh.peekNextCollapse();
     const std::optional<Collapse> next = incremental.peekNextCollapse();
     REQUIRE(expected.has_value() == next.has_value());
@@ -201,14 +212,14 @@ TEST_CASE("the first costing of every edge counts its triangle errors and stops 
   const ViewMesh initial = ViewMesh::delaunay(positions, {}, "grid");
   SyntheticErrors errors(positions);
   ProgressReporter costing("cost every edge", 0, true);
-  EdgeCollapseDecimator decimator(initial, errors, DecimationOptions{}, &costing);
+  EdgeCollapseDecimator decimator(initial, fromTriangles(errors), centroidOptions(1.85), &costing);
   CHECK(errors.evaluations > 64);  // more than one chunk
   CHECK(costing.done() == size_t(errors.evaluations));
 
   SyntheticErrors untouched(positions);
   ProgressReporter interrupted("cost every edge", 0, true);
   requestInterrupt();
-  CHECK_THROWS_AS(EdgeCollapseDecimator(initial, untouched, DecimationOptions{}, &interrupted), Interrupted);
+  CHECK_THROWS_AS(EdgeCollapseDecimator(initial, fromTriangles(untouched), centroidOptions(1.85), &interrupted), Interrupted);
   clearInterrupt();
   CHECK(untouched.evaluations == 0);
 }
@@ -218,9 +229,9 @@ TEST_CASE("edge cost: the area-weighted mean of the updated triangles' errors, o
   const ViewMesh initial = ViewMesh::delaunay(positions, {}, "grid");
   for (const bool weighted : {true, false}) {
     SyntheticErrors errors(positions);
-    DecimationOptions options{0.0, 3, false};
+    DecimationOptions options = centroidOptions(0.0, 3);
     options.areaWeightedCost = weighted;
-    EdgeCollapseDecimator decimator(initial, errors, options);
+    EdgeCollapseDecimator decimator(initial, fromTriangles(errors), options);
     // Take a few collapses so that the updated triangles differ in area.
     for (int i = 0; i < 4; ++i) REQUIRE(decimator.step());
     const std::optional<Collapse> next = decimator.peekNextCollapse();
@@ -247,7 +258,7 @@ TEST_CASE("the triangle-error cache: every distinct triangle is computed once") 
   const std::vector<glm::dvec2> positions = grid(6, 5);
   const ViewMesh initial = ViewMesh::delaunay(positions, {}, "grid");
   SyntheticErrors errors(positions);
-  EdgeCollapseDecimator decimator(initial, errors, DecimationOptions{0.0, 5, false});
+  EdgeCollapseDecimator decimator(initial, fromTriangles(errors), centroidOptions(0.0, 5));
   decimator.run();
   const DecimationStatistics& statistics = decimator.statistics();
   CHECK(uint64_t(errors.evaluations) == statistics.errorsComputed);
@@ -286,7 +297,7 @@ TEST_CASE("selection.json round trip, and bad selections name the file and the p
   const std::vector<glm::dvec2> positions = samplePositions(dataset);
   const ViewMesh initial = ViewMesh::delaunay(positions, {}, "test");
   SyntheticErrors errors(positions);
-  EdgeCollapseDecimator decimator(initial, errors, DecimationOptions{0.0, 5, false});
+  EdgeCollapseDecimator decimator(initial, fromTriangles(errors), centroidOptions(0.0, 5));
   decimator.run();
   Selection selection;
   selection.method = "edge_collapse";

@@ -185,7 +185,11 @@ TEST_CASE(
   auto run = [&](int threads) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
     DatasetTriangleErrors errors(dataset, settings, true);
-    EdgeCollapseDecimator decimator(initial, errors, DecimationOptions{0.0, 5, false});
+    DecimationOptions options;  // the default cost (served samples), with the paper's fixed boundary so that
+    options.maxError = 0.0;     // the refinement has references on the boundary to move
+    options.targetSamples = 5;
+    options.fixedBoundary = true;
+    EdgeCollapseDecimator decimator(initial, DecimationErrors{&errors, &errors}, options);
     decimator.run();
     const ViewMesh decimated = decimator.mesh();
     RefinementResult refinement = refineSelection(positions, decimated.triangles(), errors, {10.0, 8});

@@ -111,13 +111,15 @@ void DecimationSession::ensureErrors() {
   errors_ = std::move(loadedErrors_);
   lock.unlock();
   cachedErrors_ = std::make_unique<CachingTriangleErrors>(*errors_);
+  cachedSampleErrors_ = std::make_unique<CachingReconstructionErrors>(*errors_);
 }
 
 void DecimationSession::ensureDecimator() {
   ensureErrors();
   if (decimator_ && decimatorStep_ == step_) return;
   const ViewMesh mesh(samplePositions(dataset_), replayForward(initial_, log_, size_t(step_)));
-  decimator_ = std::make_unique<EdgeCollapseDecimator>(mesh, *cachedErrors_, options_);
+  decimator_ = std::make_unique<EdgeCollapseDecimator>(mesh, DecimationErrors{cachedErrors_.get(), cachedSampleErrors_.get()},
+                                                       options_);
   decimatorStep_ = step_;
 }
 
@@ -206,10 +208,10 @@ std::string formatError(double error) {
 
 void DecimationSession::runToError(double maxError) {
   // Relocations (the refinement after decimation) never pass an error goal:
-  // their cost is a mean over dense samples, not a collapse's.
+  // their error is a mean over all dense samples, not a collapse's.
   runForward(maxError, 0, formatError(maxError), [this, maxError] {
     const Collapse& next = log_[size_t(step_)];
-    return next.kind != PlacementKind::Relocation && next.cost > maxError;
+    return next.kind != PlacementKind::Relocation && next.error > maxError;
   });
 }
 

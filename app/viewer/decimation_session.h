@@ -92,6 +92,7 @@ private:
   int step_ = 0;
   std::unique_ptr<DatasetTriangleErrors> errors_;
   std::unique_ptr<CachingTriangleErrors> cachedErrors_;
+  std::unique_ptr<CachingReconstructionErrors> cachedSampleErrors_;
   std::unique_ptr<EdgeCollapseDecimator> decimator_;
   int decimatorStep_ = -1;  // the step the decimator's mesh is at
 

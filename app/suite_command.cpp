@@ -234,6 +234,7 @@ void registerSuiteCommand(CLI::App& app) {
         const int count = std::max(4, int(std::lround(fraction * dataset.sampleCount())));
         const std::filesystem::path selectionFile = directory / ("selection_" + std::to_string(count) + ".json");
         std::printf("== %s: %d of %d samples\n", scene.name.c_str(), count, dataset.sampleCount());
+        std::fflush(stdout);
         SuiteRow row;
         row.scene = scene.name;
         row.fraction = fraction;
@@ -270,6 +271,7 @@ void registerSuiteCommand(CLI::App& app) {
                     "%.0f%% of the gap closed\n",
                     row.edgeCollapse, row.uniform, row.uniformCount, row.kmedoids, formatPercent(row.versusUniform).c_str(),
                     formatPercent(row.versusKMedoids).c_str(), 100.0 * row.gapClosed);
+        std::fflush(stdout);
         results.push_back({{"scene", scene.name},
                            {"fraction", fraction},
                            {"samples", count},

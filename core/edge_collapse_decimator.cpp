@@ -618,6 +618,34 @@ bool EdgeCollapseDecimator::isValidCollapse(int first, int second, int placement
   return simulate(first, second, placement, PlacementKind::First, plan);
 }
 
+std::optional<Collapse> EdgeCollapseDecimator::evaluateCollapse(int first, int second, int placement) {
+  if (placement != first && placement != second && isVertex_[size_t(placement)]) return std::nullopt;
+  Plan plan;
+  const PlacementKind kind = placement == first ? PlacementKind::First : placement == second ? PlacementKind::Second
+                                                                                              : PlacementKind::Midpoint;
+  if (!simulate(first, second, placement, kind, plan)) return std::nullopt;
+  if (options_.cost == CollapseCost::Centroid) {
+    ensureErrors(plan.added);
+  } else {
+    std::vector<SampleReconstruction> needed;
+    for (size_t k = 0; k < plan.served.size(); ++k) needed.push_back({sortedTriangle(servingTriangle(plan, k)), plan.served[k]});
+    ensureSampleErrors(needed);
+  }
+  const auto [cost, error] = evaluate(plan);
+  if (options_.maxError > 0.0 && error > options_.maxError) return std::nullopt;
+  Collapse collapse;
+  collapse.first = first;
+  collapse.second = second;
+  collapse.placement = placement;
+  collapse.kind = kind;
+  collapse.cost = cost;
+  collapse.error = error;
+  for (int t : plan.removed) collapse.removed.push_back(canonicalTriangle(triangles_[size_t(t)]));
+  std::sort(collapse.removed.begin(), collapse.removed.end());
+  collapse.added = plan.added;
+  return collapse;
+}
+
 void EdgeCollapseDecimator::apply(const Edge& edge, const EdgeState& state) {
   const auto [a, b] = edge;
   const Plan& plan = state.plan;

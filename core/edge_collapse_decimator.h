@@ -136,6 +136,9 @@ public:
   double lowestRefusedError() const;
   // Whether collapsing the edge (first, second) into placement is valid now.
   bool isValidCollapse(int first, int second, int placement) const;
+  // That collapse with its cost and error as the decimator would rank it
+  // (not performed), or nothing if it is invalid or over the threshold.
+  std::optional<Collapse> evaluateCollapse(int first, int second, int placement);
   StopReason stopReason() const { return stopReason_; }
   // For the time left: the collapses to the target count, or, under an
   // error threshold, until the error reaches it at the pace of the last 32.

@@ -94,7 +94,85 @@ Panorama renderPanorama(const AnalyticScene& scene, glm::vec3 position, int widt
 #include "core/dataset.h"
 #include "core/exr_io.h"
 
+#include <algorithm>
+#include <random>
+#include <stdexcept>
+
 namespace triwalk::testing {
+
+namespace {
+
+void writeDataset(const std::filesystem::path& directory, const AnalyticScene& scene, const std::string& name,
+                  std::vector<ViewRecord> samples, std::vector<ViewRecord> probes, int width) {
+  std::filesystem::create_directories(directory / "samples");
+  std::filesystem::create_directories(directory / "probes");
+  Manifest manifest;
+  manifest.scene = name;
+  manifest.width = width;
+  manifest.height = width / 2;
+  manifest.samples = std::move(samples);
+  manifest.probes = std::move(probes);
+  for (const auto* views : {&manifest.samples, &manifest.probes}) {
+    for (const ViewRecord& view : *views) writePanoramaExr(directory / view.file, renderPanorama(scene, view.position, width));
+  }
+  writeManifest(directory, manifest);
+}
+
+}  // namespace
+
+void writeWallAndClutterDataset(const std::filesystem::path& directory, int paths, int steps, int width, int probes) {
+  AnalyticScene scene;
+  scene.room = AnalyticScene::Room{{-1.0f, -1.0f, 0.0f}, {9.0f, 4.0f, 2.6f}, false};
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      scene.cylinders.push_back({{5.07f + 1.065f * float(i), 0.9f + 1.2f * float(j)}, 0.15f, 0.0f, 2.6f});
+    }
+  }
+  scene.boxes.push_back({{5.45f, 1.35f, 0.0f}, {5.75f, 1.65f, 1.1f}});
+  scene.boxes.push_back({{6.8f, 0.1f, 0.0f}, {7.2f, 0.4f, 0.8f}});
+  scene.boxes.push_back({{7.6f, 1.35f, 0.0f}, {7.85f, 1.65f, 1.3f}});
+  scene.shade = [](glm::vec3 point, int surface) {
+    if (point.x < 4.0f) return glm::vec3(0.55f, 0.5f, 0.45f);  // plain
+    // Sharp stripes: any misregistration shows.
+    const float stripes = std::sin(9.0f * (point.x + point.y + point.z) + float(surface));
+    return stripes > 0.0f ? glm::vec3(0.9f, 0.85f, 0.2f) : glm::vec3(0.1f, 0.15f, 0.5f);
+  };
+  auto insideObstacle = [&](glm::vec3 position, float margin) {
+    const bool pillar = std::any_of(scene.cylinders.begin(), scene.cylinders.end(), [&](const AnalyticScene::Cylinder& c) {
+      return glm::length(glm::vec2(position) - c.center) < c.radius + margin;
+    });
+    const bool box = std::any_of(scene.boxes.begin(), scene.boxes.end(), [&](const auto& b) {
+      return position.x > b.first.x - margin && position.x < b.second.x + margin && position.y > b.first.y - margin &&
+             position.y < b.second.y + margin;
+    });
+    return pillar || box;
+  };
+  std::vector<ViewRecord> samples, probeViews;
+  for (int path = 0; path < paths; ++path) {
+    for (int step = 0; step < steps; ++step) {
+      ViewRecord sample;
+      sample.id = int(samples.size());
+      sample.file = "samples/s" + std::to_string(sample.id) + ".exr";
+      sample.position = {8.0f * float(path) / float(paths - 1), 3.0f * float(step) / float(steps - 1), 1.5f};
+      sample.path = path;
+      sample.step = step;
+      if (insideObstacle(sample.position, 0.1f)) throw std::runtime_error("wall-and-clutter: a sample falls inside an obstacle");
+      samples.push_back(sample);
+    }
+  }
+  std::mt19937 engine(7);
+  auto unit = [&] { return float(engine() >> 8) * (1.0f / 16777216.0f); };
+  while (int(probeViews.size()) < probes) {
+    const glm::vec3 position(8.0f * unit(), 3.0f * unit(), 1.5f);
+    if (insideObstacle(position, 0.05f)) continue;
+    ViewRecord probe;
+    probe.id = int(probeViews.size());
+    probe.file = "probes/p" + std::to_string(probe.id) + ".exr";
+    probe.position = position;
+    probeViews.push_back(probe);
+  }
+  writeDataset(directory, scene, "wall-and-clutter", std::move(samples), std::move(probeViews), width);
+}
 
 void writeAnalyticDataset(const std::filesystem::path& directory, int paths, int steps, int width, int probes) {
   AnalyticScene scene;

@@ -54,4 +54,11 @@ namespace triwalk::testing {
 // (analytic rendering) plus probes, written as a data set in directory.
 void writeAnalyticDataset(const std::filesystem::path& directory, int paths, int steps, int width, int probes);
 
+// A long room whose half x < 4 m is bare with plain walls (any view
+// reconstructs it well) and whose half x > 4 m is cluttered with striped
+// pillars and boxes (disocclusions and parallax everywhere). Samples on a
+// grid of paths x steps over x in [0, 8], y in [0, 3]; probes at seeded
+// random positions in the same rectangle.
+void writeWallAndClutterDataset(const std::filesystem::path& directory, int paths, int steps, int width, int probes);
+
 }  // namespace triwalk::testing

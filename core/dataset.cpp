@@ -5,6 +5,8 @@
 #include "core/json_fields.h"
 #include "core/panorama_resample.h"
 
+#include <algorithm>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -104,6 +106,7 @@ Dataset Dataset::open(const std::filesystem::path& directory) {
   manifest.width = root.integer("width");
   manifest.height = root.integer("height");
   if (root.has("capture")) manifest.capture = root.object("capture").json();
+  if (root.has("walkable")) manifest.walkable = WalkableRegion::fromJson(root.json().at("walkable"), subject);
   for (size_t i = 0; i < root.array("samples").size(); ++i) {
     manifest.samples.push_back(parseView(root.element("samples", i), true));
   }
@@ -159,6 +162,21 @@ Panorama Dataset::loadView(const ViewRecord& view, int width) const {
   return downsamplePanorama(panorama, factor);
 }
 
+WalkableRegion Dataset::walkableRegion() const {
+  if (!manifest_.walkable.empty()) return manifest_.walkable;
+  const nlohmann::json& area = manifest_.capture.contains("area") ? manifest_.capture["area"] : nlohmann::json();
+  if (area.is_array() && area.size() == 4 && std::all_of(area.begin(), area.end(), [](const auto& v) { return v.is_number(); })) {
+    const glm::dvec2 lower(area[0].get<double>(), area[1].get<double>()), upper(area[2].get<double>(), area[3].get<double>());
+    if (upper.x > lower.x && upper.y > lower.y) return WalkableRegion::rectangle(lower, upper);
+  }
+  glm::dvec2 lower(std::numeric_limits<double>::max()), upper(std::numeric_limits<double>::lowest());
+  for (const ViewRecord& sample : manifest_.samples) {
+    lower = glm::min(lower, glm::dvec2(sample.position));
+    upper = glm::max(upper, glm::dvec2(sample.position));
+  }
+  return WalkableRegion::rectangle(lower, upper);
+}
+
 EquirectProjection Dataset::projection(const ViewRecord& view) const {
   return {manifest_.width, manifest_.height, degreesToRadians(view.yawDegrees)};
 }
@@ -170,7 +188,7 @@ void writeManifest(const std::filesystem::path& directory, const Manifest& manif
   for (const ViewRecord& view : manifest.samples) samples.push_back(viewToJson(view, true));
   nlohmann::json probes = nlohmann::json::array();
   for (const ViewRecord& view : manifest.probes) probes.push_back(viewToJson(view, false));
-  const nlohmann::json document = {{"format", "triwalk-dataset"},
+  nlohmann::json document = {{"format", "triwalk-dataset"},
                                    {"version", kDatasetFormatVersion},
                                    {"scene", manifest.scene},
                                    {"projection", "equirectangular"},
@@ -180,6 +198,7 @@ void writeManifest(const std::filesystem::path& directory, const Manifest& manif
                                    {"capture", manifest.capture},
                                    {"samples", samples},
                                    {"probes", probes}};
+  if (!manifest.walkable.empty()) document["walkable"] = manifest.walkable.toJson();
   writeJsonFile(path, document);
 }
 

@@ -10,7 +10,8 @@
 //   "samples": [ {"id": 0, "file": "samples/s0000.exr", "position": [x, y, z],
 //                 "yaw_degrees": 0, "path": 0, "step": 0}, ... ],
 //   "probes":  [ {"id": 0, "file": "probes/p0000.exr", "position": [x, y, z],
-//                 "yaw_degrees": 0}, ... ]
+//                 "yaw_degrees": 0}, ... ],
+//   "walkable": {"polygons": [...]}                               (optional, core/walkable_region.h)
 // }
 // Samples are the dense reference candidates; "path"/"step" place a sample
 // on the capture's grid of parallel paths (-1 when unknown). Probes are
@@ -18,6 +19,7 @@
 
 #include "core/image.h"
 #include "core/projection.h"
+#include "core/walkable_region.h"
 
 #include <nlohmann/json.hpp>
 
@@ -46,6 +48,7 @@ struct Manifest {
   nlohmann::json capture = nlohmann::json::object();  // capture settings, informative
   std::vector<ViewRecord> samples;
   std::vector<ViewRecord> probes;
+  WalkableRegion walkable;  // empty when the manifest does not give one
 };
 
 class Dataset {
@@ -76,6 +79,10 @@ public:
   int downsamplingFactor(int width, const std::string& option) const;
 
   EquirectProjection projection(const ViewRecord& view) const;
+
+  // The walkthrough space: the manifest's walkable region, else the
+  // capture's rectangle, else the bounding box of the samples.
+  WalkableRegion walkableRegion() const;
 
 private:
   std::filesystem::path directory_;

@@ -61,6 +61,8 @@ EdgeCollapseDecimator::EdgeCollapseDecimator(const ViewMesh& mesh, DecimationErr
       incident_(mesh.positions().size()), isVertex_(mesh.positions().size(), 0), errors_(errors), options_(options) {
   TRIWALK_CHECK(options.cost == CollapseCost::Centroid ? errors.triangles != nullptr : errors.samples != nullptr,
                 "the decimator needs the error source of its cost");
+  TRIWALK_CHECK(options.sampleWeights.empty() || options.sampleWeights.size() == mesh.positions().size(),
+                "one weight per sample");
   for (size_t t = 0; t < triangles_.size(); ++t) {
     for (int v : triangles_[t]) incident_[size_t(v)].push_back(int(t));
   }
@@ -450,15 +452,18 @@ void EdgeCollapseDecimator::serveInitialSamples(const ViewMesh& mesh, ProgressRe
   }
 }
 
+double EdgeCollapseDecimator::weightOf(int sample) const {
+  return options_.sampleWeights.empty() ? 1.0 : options_.sampleWeights[size_t(sample)];
+}
+
 double EdgeCollapseDecimator::servedSampleMeanError() const {
-  double sum = 0.0;
-  int count = 0;
+  double sum = 0.0, weightSum = 0.0;
   for (size_t s = 0; s < home_.size(); ++s) {
     if (home_[s] < 0) continue;
-    sum += homeError_[s];
-    ++count;
+    sum += weightOf(int(s)) * homeError_[s];
+    weightSum += weightOf(int(s));
   }
-  return count > 0 ? sum / double(count) : 0.0;
+  return weightSum > 0.0 ? sum / weightSum : 0.0;
 }
 
 // The centroid cost of a collapse: the mean error of the updated triangles
@@ -500,14 +505,16 @@ std::pair<double, double> EdgeCollapseDecimator::evaluate(const Plan& plan) {
     const double mean = meanError(plan.added);
     return {mean, mean};
   }
-  double after = 0.0, before = 0.0;
+  double after = 0.0, before = 0.0, weightSum = 0.0;
   for (size_t i = 0; i < plan.served.size(); ++i) {
     const int sample = plan.served[i];
-    after += sampleError(servingTriangle(plan, i), sample);
-    before += homeError_[size_t(sample)];
+    const double weight = weightOf(sample);
+    after += weight * sampleError(servingTriangle(plan, i), sample);
+    before += weight * homeError_[size_t(sample)];
+    weightSum += weight;
   }
-  before += homeError_[size_t(plan.placement)];
-  return {after - before, after / double(plan.served.size())};
+  before += weightOf(plan.placement) * homeError_[size_t(plan.placement)];
+  return {after - before, weightSum > 0.0 ? after / weightSum : 0.0};
 }
 
 // Costs a batch of edges: every candidate collapse is simulated first, the

@@ -95,6 +95,10 @@ struct DecimationOptions {
   // leaves the mesh).
   bool fixedBoundary = false;
   bool areaWeightedCost = true;  // centroid cost: false for the paper's plain mean over the updated triangles
+  // Served-sample cost: each sample's share of the walkthrough area
+  // (sampleAreaWeights), so that sums over samples estimate the area's
+  // error; empty: equal shares.
+  std::vector<double> sampleWeights;
 };
 
 // Where the costs come from: triangle errors for the centroid cost,
@@ -150,8 +154,8 @@ public:
   const DecimationStatistics& statistics() const { return statistics_; }
   // Error of a triangle, from the cache or computed (centroid cost).
   double triangleError(const Triangle& triangle);
-  // Served-sample cost: the mean error of the dense samples that are not
-  // references, each from the triangle serving it.
+  // Served-sample cost: the weighted mean error of the dense samples that
+  // are not references, each from the triangle serving it.
   double servedSampleMeanError() const;
 
 private:
@@ -204,6 +208,7 @@ private:
   bool staysInside(const Plan& plan) const;
   bool keepsEveryVertex(int a, int b, const Plan& plan) const;
   const Triangle& servingTriangle(const Plan& plan, size_t i) const;
+  double weightOf(int sample) const;
   std::vector<std::pair<int, PlacementKind>> candidates(int a, int b, EdgeState& state) const;
   void assignServedSamples(int a, int b, Plan& plan) const;
   void costEdges(const std::vector<Edge>& edges, ProgressReporter* progress = nullptr);

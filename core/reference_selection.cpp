@@ -7,10 +7,16 @@
 
 namespace triwalk {
 
-SelectionRun selectReferences(const Dataset& dataset, DatasetTriangleErrors& errors, const SelectionSettings& settings,
+SelectionRun selectReferences(const Dataset& dataset, DatasetTriangleErrors& errors, const SelectionSettings& requested,
                               bool quiet) {
   SelectionRun run;
   const ViewMesh initial = ViewMesh::delaunay(samplePositions(dataset), {}, dataset.manifestPath().string());
+  SelectionSettings settings = requested;
+  if (settings.areaWeights) {
+    const std::vector<double> weights = sampleAreaWeights(initial.positions(), dataset.walkableRegion());
+    settings.decimation.sampleWeights = weights;
+    settings.refinement.sampleWeights = weights;
+  }
   run.initialSamples = initial.vertexCount();
   // One cache of dense-sample errors serves the collapses and the
   // refinement, which starts from the errors the collapses left.

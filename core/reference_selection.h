@@ -15,6 +15,9 @@ namespace triwalk {
 struct SelectionSettings {
   DecimationOptions decimation;
   RefinementOptions refinement;
+  // Weigh each dense sample by its share of the walkable region (see
+  // sampleAreaWeights) in the served-sample cost and the refinement.
+  bool areaWeights = true;
 };
 
 struct SelectionRun {

@@ -17,8 +17,10 @@ namespace {
 // Which triangle reconstructs each dense sample that is not a reference.
 class ObjectiveEvaluator {
 public:
-  ObjectiveEvaluator(std::span<const glm::dvec2> positions, ReconstructionErrorSource& errors, RefinementResult& result)
-      : positions_(positions.begin(), positions.end()), errors_(errors), result_(result) {}
+  ObjectiveEvaluator(std::span<const glm::dvec2> positions, std::span<const double> weights,
+                     ReconstructionErrorSource& errors, RefinementResult& result)
+      : positions_(positions.begin(), positions.end()), weights_(weights.begin(), weights.end()), errors_(errors),
+        result_(result) {}
 
   std::vector<SampleReconstruction> assignments(const ViewMesh& mesh) const {
     std::vector<SampleReconstruction> requests;
@@ -54,10 +56,13 @@ public:
   }
 
   double mean(const std::vector<SampleReconstruction>& assignment) const {
-    if (assignment.empty()) return 0.0;
-    double sum = 0.0;
-    for (const SampleReconstruction& request : assignment) sum += known_.at(request);
-    return sum / double(assignment.size());
+    double sum = 0.0, weightSum = 0.0;
+    for (const SampleReconstruction& request : assignment) {
+      const double weight = weights_.empty() ? 1.0 : weights_[size_t(request.destination)];
+      sum += weight * known_.at(request);
+      weightSum += weight;
+    }
+    return weightSum > 0.0 ? sum / weightSum : 0.0;
   }
 
   std::optional<ViewMesh> triangulate(const std::vector<int>& references) const {
@@ -66,6 +71,7 @@ public:
 
 private:
   std::vector<glm::dvec2> positions_;
+  std::vector<double> weights_;
   ReconstructionErrorSource& errors_;
   RefinementResult& result_;
   std::map<SampleReconstruction, double> known_;
@@ -93,7 +99,7 @@ RefinementResult refineSelection(std::span<const glm::dvec2> positions, const st
                                  ReconstructionErrorSource& errors, const RefinementOptions& options,
                                  ProgressReporter* progress) {
   RefinementResult result;
-  ObjectiveEvaluator evaluator(positions, errors, result);
+  ObjectiveEvaluator evaluator(positions, options.sampleWeights, errors, result);
   TRIWALK_CHECK(!current.empty(), "refining a selection needs its triangles");
   ViewMesh mesh(std::vector<glm::dvec2>(positions.begin(), positions.end()), current);
   std::vector<int> references = mesh.vertices();  // sorted

@@ -14,7 +14,8 @@
 // triangle reconstructs the outside well enough. docs/RESULTS.md has the
 // measurements behind the radius and the objective.
 //
-//   objective(S) = mean over dense samples i not in S of E(i | triangle of S around i)
+//   objective(S) = mean over dense samples i not in S of E(i | triangle of S around i),
+//                  weighted by each sample's share of the area
 //   repeat until no reference is flagged (or maxPasses):
 //     for each flagged reference v, ascending:
 //       try every free sample c within radius of v: S - v + c, Delaunay
@@ -42,6 +43,7 @@ class ProgressReporter;
 struct RefinementOptions {
   double radius = 0.5;  // metres a reference may move per step; 0 disables refinement
   int maxPasses = 8;
+  std::vector<double> sampleWeights;  // each sample's share of the area (empty: equal), for the mean
 };
 
 struct RefinementResult {

@@ -79,7 +79,7 @@ TEST_CASE("a reference that spoils every triangle it is in moves away to the low
   FormulaErrors errors(formula);
   const std::vector<int> references = {0, 1, 4, 12, 15};
   const ViewMesh start = ViewMesh::delaunay(positions, references, "test");
-  const RefinementResult result = refineSelection(positions, start.triangles(), errors, {1.5, 8});
+  const RefinementResult result = refineSelection(positions, start.triangles(), errors, {1.5, 8, {}});
 
   // Sample 0 is in every triangle of the start, so every sample costs 11.
   CHECK(result.objectiveBefore == 11.0);
@@ -110,7 +110,7 @@ TEST_CASE("refinement lowers the mean error, logs moves that replay to the resul
   FormulaErrors errors(formula);
   const std::vector<int> references = {0, 1, 5, 6, 2};  // (0,0) (0,1) (1,0) (1,1) (0,2)
   const ViewMesh start = ViewMesh::delaunay(positions, references, "test");
-  const RefinementResult result = refineSelection(positions, start.triangles(), errors, {1.5, 20});
+  const RefinementResult result = refineSelection(positions, start.triangles(), errors, {1.5, 20, {}});
 
   REQUIRE(result.moves.size() >= 3);
   CHECK(result.objectiveAfter < 0.6 * result.objectiveBefore);
@@ -137,7 +137,7 @@ TEST_CASE("refinement lowers the mean error, logs moves that replay to the resul
   CHECK(replayed == result.triangles);
   CHECK(replayBackward(result.triangles, result.moves, result.moves.size()) == start.triangles());
   // A second refinement from the result finds nothing to move.
-  CHECK(refineSelection(positions, final.triangles(), errors, {1.5, 20}).moves.empty());
+  CHECK(refineSelection(positions, final.triangles(), errors, {1.5, 20, {}}).moves.empty());
 }
 
 TEST_CASE("refinement with radius 0 changes nothing, and Ctrl-C stops it") {
@@ -146,13 +146,13 @@ TEST_CASE("refinement with radius 0 changes nothing, and Ctrl-C stops it") {
       [](const Triangle& t, int destination) { return double((t[0] + t[1] + t[2] + destination) % 7); });
   const std::vector<int> references = {0, 3, 20, 23, 9};
   const ViewMesh start = ViewMesh::delaunay(positions, references, "test");
-  const RefinementResult unchanged = refineSelection(positions, start.triangles(), errors, {0.0, 8});
+  const RefinementResult unchanged = refineSelection(positions, start.triangles(), errors, {0.0, 8, {}});
   CHECK(unchanged.moves.empty());
   CHECK(unchanged.triangles == start.triangles());
   CHECK(unchanged.objectiveAfter == unchanged.objectiveBefore);
 
   requestInterrupt();
-  CHECK_THROWS_AS(refineSelection(positions, start.triangles(), errors, {1.5, 8}), Interrupted);
+  CHECK_THROWS_AS(refineSelection(positions, start.triangles(), errors, {1.5, 8, {}}), Interrupted);
   clearInterrupt();
 }
 
@@ -192,7 +192,7 @@ TEST_CASE(
     EdgeCollapseDecimator decimator(initial, DecimationErrors{&errors, &errors}, options);
     decimator.run();
     const ViewMesh decimated = decimator.mesh();
-    RefinementResult refinement = refineSelection(positions, decimated.triangles(), errors, {10.0, 8});
+    RefinementResult refinement = refineSelection(positions, decimated.triangles(), errors, {10.0, 8, {}});
     std::vector<Collapse> log = decimator.log();
     log.insert(log.end(), refinement.moves.begin(), refinement.moves.end());
     return std::pair(log, refinement);

@@ -1,0 +1,60 @@
+#pragma once
+// The walkthrough space: a region of any shape on the floor plane (x, y in
+// metres), the union of polygons with holes (rooms joined through
+// doorways, corridors, holes around pillars). Stored in a manifest, or
+// given by the user, as
+//   "walkable": {"polygons": [{"outer": [[x, y], ...], "holes": [[[x, y], ...], ...]}, ...]}
+// with counter-clockwise outer rings and clockwise holes (either order is
+// accepted on reading and normalized). Samples and probes lie inside it;
+// it weighs how much of the walkthrough each dense sample stands for.
+
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include <span>
+#include <string>
+#include <vector>
+
+namespace triwalk {
+
+using Ring = std::vector<glm::dvec2>;
+
+struct RegionPolygon {
+  Ring outer;               // counter-clockwise
+  std::vector<Ring> holes;  // clockwise
+};
+
+class WalkableRegion {
+public:
+  WalkableRegion() = default;
+  // Normalizes ring orientation. Throws InputError naming subject for a
+  // ring with fewer than 3 points, non-finite or repeated points, zero
+  // area, self-intersections, or rings that cross each other.
+  WalkableRegion(std::vector<RegionPolygon> polygons, const std::string& subject);
+  static WalkableRegion rectangle(glm::dvec2 lower, glm::dvec2 upper);
+
+  const std::vector<RegionPolygon>& polygons() const { return polygons_; }
+  bool empty() const { return polygons_.empty(); }
+  // Inside or on the boundary.
+  bool contains(glm::dvec2 point) const;
+  double area() const;
+  void bounds(glm::dvec2& lower, glm::dvec2& upper) const;
+
+  nlohmann::json toJson() const;
+  // Reads the {"polygons": [...]} form; errors name subject and the field.
+  static WalkableRegion fromJson(const nlohmann::json& value, const std::string& subject);
+
+private:
+  std::vector<RegionPolygon> polygons_;
+};
+
+// Each sample's share of the region: the area of the part of it nearer to
+// that sample than to any other (its Voronoi cell clipped to the region),
+// estimated on a raster of about 200,000 cells and scaled to average 1.
+// With these weights a mean over the dense samples estimates the mean over
+// the region, i.e. over uniformly placed probes and walkers: on a grid, a
+// sample on the region's edge stands for half the area an interior one
+// does, a corner for a quarter. Deterministic.
+std::vector<double> sampleAreaWeights(std::span<const glm::dvec2> positions, const WalkableRegion& region);
+
+}  // namespace triwalk

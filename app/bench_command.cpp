@@ -3,6 +3,7 @@
 
 #include "app/bench_groups.h"
 #include "app/commands.h"
+#include "app/option_checks.h"
 #include "core/errors.h"
 #include "render/gl_context.h"
 #include "render/scene_description.h"
@@ -27,7 +28,7 @@ void registerBenchCommand(CLI::App& app) {
       ->check(CLI::IsMember({"capture", "decimate", "warp", "render", "viewer"}));
   command->add_option("--gl", arguments->gl, "Headless OpenGL: auto, egl or osmesa")->capture_default_str();
   command->add_option("--capture-views", arguments->captureViews, "Panoramas rendered for the capture figure")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+      ->capture_default_str()->check(positiveNumber());
   command->add_option("--decimation-width", arguments->decimationWidth, "Panorama width decimation works at")
       ->capture_default_str()->check(CLI::IsMember({64, 128, 256, 512, 1024}));
   command->add_option("--dataset", arguments->dataset,

@@ -1,6 +1,7 @@
 // `triwalk capture`: render a scene's dense samples and probes into a data set.
 
 #include "app/commands.h"
+#include "app/option_checks.h"
 #include "app/scene_capture.h"
 
 namespace triwalk {
@@ -21,18 +22,18 @@ void registerCaptureCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("capture", "Render the dense panorama samples and held-out probes of a scene");
   command->add_option("--scene", arguments->scene, "builtin, a scene description (.json) or any file Assimp reads")
       ->capture_default_str();
-  command->add_option("--out", arguments->out, "Output data set directory")->required();
+  command->add_option("--out", arguments->out, "Output data set directory")->required()->check(writableDirectory());
   command->add_option("--paths", arguments->options.paths, "Number of parallel capture paths")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+      ->capture_default_str()->check(positiveNumber());
   command->add_option("--per-path", arguments->options.perPath, "Samples per path")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+      ->capture_default_str()->check(positiveNumber());
   command->add_option("--spacing", arguments->spacing,
                       "Metres between samples and between paths (overrides --paths and --per-path)")
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumber());
   command->add_option("--area", arguments->area, "Sampled rectangle x0,y0,x1,y1 in metres (default: the scene's)")
       ->delimiter(',')->expected(4);
   command->add_option("--eye-height", arguments->eyeHeight, "Camera height above the floor, metres (default: the scene's)")
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumber());
   command->add_option("--width", arguments->options.width, "Panorama width in pixels (height = width / 2)")
       ->capture_default_str();
   command->add_option("--face-size", arguments->options.faceSize, "Cube face resolution (0: 3/8 of the width)")

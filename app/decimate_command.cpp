@@ -3,6 +3,7 @@
 
 #include "app/commands.h"
 #include "app/decimation_options.h"
+#include "app/option_checks.h"
 #include "core/errors.h"
 #include "core/progress.h"
 #include "core/reference_selection.h"
@@ -24,12 +25,12 @@ void registerDecimateCommand(CLI::App& app) {
   auto arguments = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand("decimate", "Select reference samples by edge-collapse decimation");
   command->add_option("--dataset", arguments->dataset, "Data set directory")->required();
-  command->add_option("--out", arguments->out, "Selection file to write (selection.json)")->required();
+  command->add_option("--out", arguments->out, "Selection file to write (selection.json)")->required()->check(writableFile());
   command->add_option("--max-error", arguments->maxError,
                       "Stop before a collapse whose cost exceeds this (the paper's 1.85); 0 disables")
-      ->capture_default_str()->check(CLI::NonNegativeNumber);
+      ->capture_default_str()->check(nonNegativeNumber());
   command->add_option("--target", arguments->target, "Stop at this many samples; 0 disables")
-      ->capture_default_str()->check(CLI::NonNegativeNumber);
+      ->capture_default_str()->check(nonNegativeNumber());
   addSelectionOptions(*command, arguments->selection);
   command->add_flag("--quiet", arguments->quiet, "No progress output");
   addErrorOptions(*command, arguments->errors);
@@ -43,7 +44,7 @@ void registerDecimateCommand(CLI::App& app) {
       throw InputError("--target", std::to_string(a.target) + " is more than the " + std::to_string(dataset.sampleCount()) +
                                        " samples of the data set");
     }
-    const TriangleErrorSettings settings = triangleErrorSettings(a.errors);
+    const TriangleErrorSettings settings = triangleErrorSettings(a.errors, dataset);
     std::printf("%s\n", describeErrorSettings(settings).c_str());
 
     InterruptScope interruptScope;

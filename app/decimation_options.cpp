@@ -1,11 +1,14 @@
 #include "app/decimation_options.h"
 
+#include "app/option_checks.h"
+
 namespace triwalk {
 
 void addErrorOptions(CLI::App& command, ErrorArguments& arguments) {
   command.add_option("--error-width", arguments.width,
-                     "Panorama width triangle errors are computed at (divides the data set's width)")
-      ->capture_default_str();
+                     "Panorama width errors are computed at (divides the data set's width; default: the largest such "
+                     "width not above " + std::to_string(kDefaultErrorWidth) + ")")
+      ->check(nonNegativeNumber());
   command.add_option("--triangle-destinations", arguments.destinations,
                      "Where a triangle's error is measured: centroid (the paper's), quadrature (centroid and the "
                      "three sub-triangle centroids) or interior (up to 8 samples inside it)")
@@ -13,9 +16,10 @@ void addErrorOptions(CLI::App& command, ErrorArguments& arguments) {
   addQualityOptions(command, arguments.quality);
 }
 
-TriangleErrorSettings triangleErrorSettings(const ErrorArguments& arguments) {
+TriangleErrorSettings triangleErrorSettings(const ErrorArguments& arguments, const Dataset& dataset) {
   TriangleErrorSettings settings;
-  settings.width = arguments.width;
+  settings.width = arguments.width > 0 ? arguments.width : dataset.largestWidthAtMost(kDefaultErrorWidth);
+  dataset.downsamplingFactor(settings.width, "--error-width");
   settings.destinations = parseTriangleDestinations(arguments.destinations);
   settings.synthesis = synthesisOptions(arguments.quality);
   settings.error = errorOptions(arguments.quality);
@@ -46,7 +50,7 @@ void addSelectionOptions(CLI::App& command, SelectionArguments& arguments) {
   command.add_option("--refine-radius", arguments.refineRadius,
                      "After decimation, move references up to this far (metres) at a time while that lowers the "
                      "mean error over the dense samples; 0 disables")
-      ->capture_default_str()->check(CLI::NonNegativeNumber);
+      ->capture_default_str()->check(nonNegativeNumber());
 }
 
 SelectionSettings selectionSettings(const SelectionArguments& arguments, double maxError, int targetSamples) {

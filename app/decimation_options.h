@@ -12,7 +12,7 @@
 namespace triwalk {
 
 struct ErrorArguments {
-  int width = 256;
+  int width = 0;  // 0: the largest width not above kDefaultErrorWidth that divides the data set's
   std::string destinations = "centroid";
   QualityArguments quality;
 };
@@ -33,7 +33,7 @@ void addSelectionOptions(CLI::App& command, SelectionArguments& arguments);
 SelectionSettings selectionSettings(const SelectionArguments& arguments, double maxError, int targetSamples);
 // For selection.json: the settings that made it.
 nlohmann::json describeSelectionSettings(const SelectionSettings& settings, const TriangleErrorSettings& errors);
-TriangleErrorSettings triangleErrorSettings(const ErrorArguments& arguments);
+TriangleErrorSettings triangleErrorSettings(const ErrorArguments& arguments, const Dataset& dataset);
 std::string describeErrorSettings(const TriangleErrorSettings& settings);
 
 }  // namespace triwalk

@@ -3,6 +3,7 @@
 
 #include "app/commands.h"
 #include "app/decimation_options.h"
+#include "app/option_checks.h"
 #include "core/baselines.h"
 #include "core/errors.h"
 #include "core/evaluation.h"
@@ -98,8 +99,8 @@ void registerEvalCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("eval", "Table 1: edge collapse against the dense set and the baselines");
   command->add_option("--dataset", arguments->dataset, "Data set directory")->required();
   command->add_option("--selection", arguments->selection, "Edge-collapse selection (from decimate)")->required();
-  command->add_option("--json", arguments->json, "Also write the rows as JSON");
-  command->add_option("--heatmaps", arguments->heatmaps, "Directory for per-probe error heatmap PNGs");
+  command->add_option("--json", arguments->json, "Also write the rows as JSON")->check(writableFile());
+  command->add_option("--heatmaps", arguments->heatmaps, "Directory for per-probe error heatmap PNGs")->check(writableDirectory());
   command->add_option("--seed", arguments->seed, "Seed of the random baseline")->capture_default_str();
   command->add_option("--counts", arguments->counts,
                       "Also compare probe errors at these sample counts, replaying the selection's collapse log "
@@ -114,7 +115,7 @@ void registerEvalCommand(CLI::App& app) {
     const Selection selection = readSelection(a.selection, dataset);
     if (dataset.probeCount() == 0) throw InputError(dataset.manifestPath().string(), "eval needs probes (capture --probes N)");
     checkCounts(dataset, selection, a.counts);
-    const TriangleErrorSettings settings = triangleErrorSettings(a.errors);
+    const TriangleErrorSettings settings = triangleErrorSettings(a.errors, dataset);
     InterruptScope interruptScope;
     DatasetTriangleErrors errors(dataset, settings, a.quiet);
 

@@ -1,4 +1,5 @@
 #include "app/commands.h"
+#include "app/option_checks.h"
 #include "app/view_ids.h"
 #include "core/dataset.h"
 #include "core/errors.h"
@@ -37,9 +38,9 @@ void registerExportPngCommand(CLI::App& app) {
   command->add_option("--dataset", arguments->dataset, "Data set directory")->required();
   command->add_option("--views", arguments->views, "Views: sample ids, pN for probes, or all")
       ->delimiter(',')->capture_default_str();
-  command->add_option("--out", arguments->out, "Output directory")->required();
+  command->add_option("--out", arguments->out, "Output directory")->required()->check(writableDirectory());
   command->add_option("--max-distance", arguments->maxDistance, "Distance shown red, metres")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+      ->capture_default_str()->check(positiveNumber());
   command->callback([arguments] {
     const Dataset dataset = Dataset::open(arguments->dataset);
     std::filesystem::create_directories(arguments->out);

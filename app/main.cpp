@@ -3,6 +3,7 @@
 // failures into one line on stderr and a non-zero exit status.
 
 #include "app/commands.h"
+#include "app/option_checks.h"
 #include "core/errors.h"
 #include "render/gl_context.h"
 
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
   triwalk::registerViewCommand(app);
 #endif
   triwalk::registerBenchCommand(app);
+  triwalk::hardenCommandLine(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

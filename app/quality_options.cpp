@@ -1,5 +1,7 @@
 #include "app/quality_options.h"
 
+#include "app/option_checks.h"
+
 #include <cstdio>
 
 namespace triwalk {
@@ -20,7 +22,7 @@ void addBlendOptions(CLI::App& command, QualityArguments& arguments) {
   command.add_option("--epsilon", arguments.epsilon, "Blend interval, relative to the nearest distance (Eq. 1)")
       ->capture_default_str()->check(CLI::Range(0.0f, 10.0f))->group("Blend");
   command.add_option("--min-weight-distance", arguments.minimumWeightDistance, "r_min of the weights 1/max(d, r_min), metres")
-      ->capture_default_str()->check(CLI::PositiveNumber)->group("Blend");
+      ->capture_default_str()->check(positiveNumber())->group("Blend");
 }
 
 }  // namespace
@@ -38,7 +40,7 @@ void addQualityOptions(CLI::App& command, QualityArguments& arguments) {
   command.add_option("--alpha", arguments.alpha, "Weight of R in E = alpha R + beta B")->capture_default_str()->group("Error");
   command.add_option("--beta", arguments.beta, "Weight of B (percent of bad pixels)")->capture_default_str()->group("Error");
   command.add_option("--delta", arguments.delta, "Bad-pixel tolerance on the 0..255 scale")
-      ->capture_default_str()->check(CLI::NonNegativeNumber)->group("Error");
+      ->capture_default_str()->check(nonNegativeNumber())->group("Error");
   command.add_option("--pixel-weighting", arguments.pixelWeighting, "solid-angle (panoramas) or uniform (the paper's)")
       ->capture_default_str()->check(CLI::IsMember({"solid-angle", "uniform"}))->group("Error");
 }

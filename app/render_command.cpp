@@ -2,6 +2,7 @@
 // the GPU warp; --compare also renders the CPU reference of each frame.
 
 #include "app/commands.h"
+#include "app/option_checks.h"
 #include "app/quality_options.h"
 #include "app/walkthrough_setup.h"
 #include "core/blend.h"
@@ -66,7 +67,7 @@ void registerRenderCommand(CLI::App& app) {
                       "Camera path file (x y z yaw pitch a line), or the preset rotate (turn at --at) or translate "
                       "(--from to --to)")
       ->capture_default_str();
-  command->add_option("--out", arguments->out, "Directory for frame_NNNN.png")->required();
+  command->add_option("--out", arguments->out, "Directory for frame_NNNN.png")->required()->check(writableDirectory());
   command->add_option("--size", arguments->size, "Frame size WIDTHxHEIGHT")->capture_default_str();
   command->add_option("--fov", arguments->fov, "Vertical field of view, degrees")
       ->capture_default_str()->check(CLI::Range(10.0f, 150.0f));

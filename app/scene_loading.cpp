@@ -1,5 +1,6 @@
 #include "app/scene_loading.h"
 
+#include "app/option_checks.h"
 #include "core/errors.h"
 #include "render/scene_description.h"
 
@@ -11,7 +12,7 @@ namespace triwalk {
 void addSceneImportOptions(CLI::App& command, SceneImportArguments& arguments) {
   command.add_option("--unit-scale", arguments.unitScale,
                      "Metres per unit of an imported scene (0: automatic, 0.0254 for Quake 3, else 1)")
-      ->capture_default_str()->check(CLI::NonNegativeNumber)->group("Import");
+      ->capture_default_str()->check(nonNegativeNumber())->group("Import");
   command.add_option("--up-axis", arguments.upAxis, "Up axis of an imported scene: auto, x, y or z")
       ->capture_default_str()->check(CLI::IsMember({"auto", "x", "y", "z"}))->group("Import");
   command.add_option("--map", arguments.map, "Quake 3 archive (.pk3): the map to read, e.g. oacmpdm3 (default: the first)")

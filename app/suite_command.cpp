@@ -18,6 +18,7 @@
 
 #include "app/commands.h"
 #include "app/decimation_options.h"
+#include "app/option_checks.h"
 #include "app/scene_capture.h"
 #include "core/atomic_file.h"
 #include "core/baselines.h"
@@ -181,7 +182,7 @@ void registerSuiteCommand(CLI::App& app) {
       app.add_subcommand("suite", "Measure the selection against the baselines on several scenes and sample counts");
   command->add_option("--spec", arguments->spec, "Suite file (JSON: scenes, capture width, probes, count fractions)")
       ->required();
-  command->add_option("--out", arguments->out, "Directory for the data sets, selections and the table")->required();
+  command->add_option("--out", arguments->out, "Directory for the data sets, selections and the table")->required()->check(writableDirectory());
   command->add_option("--only", arguments->only, "Run only these scenes (names from the spec)")->delimiter(',');
   command->add_flag("--reuse-selections", arguments->reuseSelections,
                     "Evaluate selections already in --out instead of decimating again");
@@ -197,12 +198,11 @@ void registerSuiteCommand(CLI::App& app) {
         throw InputError("--only", "no scene '" + name + "' in " + a.spec);
       }
     }
-    const TriangleErrorSettings settings = triangleErrorSettings(a.errors);
     const std::filesystem::path out = a.out;
     std::error_code error;
     std::filesystem::create_directories(out, error);
     if (error) throw InputError(a.out, "cannot create the directory: " + error.message());
-    std::printf("suite %s: %zu scenes; %s\n", a.spec.c_str(), spec.scenes.size(), describeErrorSettings(settings).c_str());
+    std::printf("suite %s: %zu scenes\n", a.spec.c_str(), spec.scenes.size());
 
     InterruptScope interruptScope;
     std::vector<SuiteRow> rows;
@@ -225,6 +225,8 @@ void registerSuiteCommand(CLI::App& app) {
       }
       const Dataset dataset = Dataset::open(datasetDirectory);
       if (dataset.probeCount() < 2) throw InputError(dataset.manifestPath().string(), "the suite needs probes");
+      const TriangleErrorSettings settings = triangleErrorSettings(a.errors, dataset);
+      std::printf("== %s: %s\n", scene.name.c_str(), describeErrorSettings(settings).c_str());
       DatasetTriangleErrors errors(dataset, settings, a.quiet);
       const std::vector<glm::dvec2> positions = samplePositions(dataset);
       const std::vector<double> dense = probeErrors(ViewMesh::delaunay(positions, {}, dataset.manifestPath().string()), errors);
@@ -273,6 +275,7 @@ void registerSuiteCommand(CLI::App& app) {
                     formatPercent(row.versusKMedoids).c_str(), 100.0 * row.gapClosed);
         std::fflush(stdout);
         results.push_back({{"scene", scene.name},
+                           {"settings", describeSelectionSettings(selectionSettings(a.selection, 0.0, count), settings)},
                            {"fraction", fraction},
                            {"samples", count},
                            {"uniform_samples", row.uniformCount},
@@ -291,9 +294,7 @@ void registerSuiteCommand(CLI::App& app) {
     progress.finish();
     const std::string table = tableOf(rows, spec.fractions);
     std::printf("\n%s", table.c_str());
-    writeJsonFile(out / "suite.json", {{"spec", a.spec},
-                                       {"settings", describeSelectionSettings(selectionSettings(a.selection, 0.0, 0), settings)},
-                                       {"rows", results}});
+    writeJsonFile(out / "suite.json", {{"spec", a.spec}, {"rows", results}});
     writeTextFileAtomically(out / "suite.md", table);
     std::printf("wrote %s and %s\n", (out / "suite.md").c_str(), (out / "suite.json").c_str());
   });

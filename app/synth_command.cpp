@@ -2,6 +2,7 @@
 // reference warp and, where ground truth exists, measure R, B, E.
 
 #include "app/commands.h"
+#include "app/option_checks.h"
 #include "app/quality_options.h"
 #include "app/view_ids.h"
 #include "core/color.h"
@@ -110,7 +111,7 @@ void registerSynthCommand(CLI::App& app) {
   command->add_option("--refs", arguments->references, "Reference sample ids, e.g. 12,13,27")->delimiter(',');
   command->add_option("--at", arguments->at, "Destination position x,y,z in metres")->delimiter(',')->expected(3);
   command->add_option("--truth", arguments->truth, "Ground truth view (sample id or pN); default: a view at --at");
-  command->add_option("--out", arguments->out, "Directory for reconstruction, truth and heatmap PNGs");
+  command->add_option("--out", arguments->out, "Directory for reconstruction, truth and heatmap PNGs")->check(writableDirectory());
   command->add_option("--width", arguments->width, "Work at this panorama width (divides the data set's); 0 = full")
       ->capture_default_str();
   command->add_flag("--all-probes", arguments->allProbes,

@@ -1,5 +1,6 @@
 #include "core/dataset.h"
 
+#include "core/contained_path.h"
 #include "core/errors.h"
 #include "core/exr_io.h"
 #include "core/json_fields.h"
@@ -117,11 +118,9 @@ Dataset Dataset::open(const std::filesystem::path& directory) {
   }
   validateManifest(manifest, subject);
 
-  for (const auto* views : {&manifest.samples, &manifest.probes}) {
+  for (const auto& [views, kind] : {std::pair(&manifest.samples, "sample"), std::pair(&manifest.probes, "probe")}) {
     for (const ViewRecord& view : *views) {
-      if (!std::filesystem::exists(directory / view.file)) {
-        throw InputError((directory / view.file).string(), "file does not exist (listed in manifest.json)");
-      }
+      containedFile(directory, view.file, subject + ": " + kind + " " + std::to_string(view.id));
     }
   }
   return dataset;
@@ -148,6 +147,15 @@ int Dataset::downsamplingFactor(int width, const std::string& option) const {
                                  std::to_string(manifest_.width) + " (and its height) by a whole number");
   }
   return manifest_.width / width;
+}
+
+int Dataset::largestWidthAtMost(int limit) const {
+  for (int factor = 1; factor <= manifest_.height; ++factor) {
+    if (manifest_.width % factor == 0 && manifest_.height % factor == 0 && manifest_.width / factor <= limit) {
+      return manifest_.width / factor;
+    }
+  }
+  return manifest_.width / manifest_.height;
 }
 
 Panorama Dataset::loadView(const ViewRecord& view, int width) const {

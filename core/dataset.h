@@ -77,6 +77,9 @@ public:
   // Throws InputError (naming option) unless width is 0 or divides the
   // data set's width by an integer factor.
   int downsamplingFactor(int width, const std::string& option) const;
+  // The largest width not above `limit` that downsamplingFactor accepts
+  // (the full width if it is not above the limit).
+  int largestWidthAtMost(int limit) const;
 
   EquirectProjection projection(const ViewRecord& view) const;
 

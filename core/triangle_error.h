@@ -58,8 +58,13 @@ constexpr int kMaxInteriorDestinations = 8;
 // Parses "centroid", "quadrature" or "interior"; throws InputError.
 TriangleDestinations parseTriangleDestinations(const std::string& name);
 
+// Errors at most this wide unless asked (the width the main job and
+// docs/RESULTS.md measure at); commands pick the largest width not above it
+// that divides the data set's (Dataset::largestWidthAtMost).
+inline constexpr int kDefaultErrorWidth = 256;
+
 struct TriangleErrorSettings {
-  int width = 256;  // panorama width the errors are computed at
+  int width = kDefaultErrorWidth;  // panorama width the errors are computed at
   size_t layerCacheBytes = defaultLayerCacheBytes();  // warped layers kept for reuse
   TriangleDestinations destinations = TriangleDestinations::Centroid;
   SynthesisOptions synthesis;

@@ -176,7 +176,26 @@ TEST_CASE("bad data sets give one-line errors naming the file") {
   }
   SUBCASE("missing view file") {
     std::filesystem::remove(root / "samples/s2.exr");
-    requireInputError(open, "samples/s2.exr", "does not exist");
+    requireInputError(open, manifestName + ": sample 2", "file 'samples/s2.exr' does not exist");
+  }
+  SUBCASE("absolute view file") {
+    editManifest(root, [](nlohmann::json& m) { m["samples"][2]["file"] = "/etc/passwd"; });
+    requireInputError(open, manifestName + ": sample 2", "file '/etc/passwd' is absolute");
+  }
+  SUBCASE("view file that climbs out of the data set") {
+    editManifest(root, [](nlohmann::json& m) { m["probes"][0]["file"] = "samples/../../../../etc/hostname"; });
+    requireInputError(open, manifestName + ": probe 0", "leaves the data set folder");
+  }
+  SUBCASE("view file that is a symlink out of the data set") {
+    TemporaryDirectory elsewhere;
+    writePanoramaExr(elsewhere.path() / "outside.exr", syntheticPanorama(32, 16, 9));
+    std::filesystem::remove(root / "samples/s1.exr");
+    std::filesystem::create_symlink(elsewhere.path() / "outside.exr", root / "samples/s1.exr");
+    requireInputError(open, manifestName + ": sample 1", "leads outside the data set folder");
+  }
+  SUBCASE("view file that is a folder") {
+    editManifest(root, [](nlohmann::json& m) { m["samples"][1]["file"] = "samples"; });
+    requireInputError(open, manifestName + ": sample 1", "file 'samples' is not a regular file");
   }
   SUBCASE("fewer than 3 samples") {
     editManifest(root, [](nlohmann::json& m) { m["samples"] = {m["samples"][0], m["samples"][1]}; });

@@ -1,10 +1,12 @@
 // `triwalk view`: open the walkthrough viewer.
 
 #include "app/commands.h"
+#include "app/option_checks.h"
 #include "app/quality_options.h"
 #include "app/viewer/viewer_app.h"
 #include "app/walkthrough_setup.h"
 #include "core/errors.h"
+#include "core/triangle_error.h"
 
 namespace triwalk {
 
@@ -12,7 +14,7 @@ void registerViewCommand(CLI::App& app) {
   struct Arguments {
     std::string dataset, selection, size = "1280x720", screenshot, path;
     int frames = 0;
-    int errorWidth = 256;
+    int errorWidth = 0;
     size_t cacheMegabytes = 1024;
     QualityArguments quality;
   };
@@ -23,10 +25,11 @@ void registerViewCommand(CLI::App& app) {
                       "Selection to walk through and step (default: the dense triangulation, to decimate here)");
   command->add_option("--size", arguments->size, "Window size WIDTHxHEIGHT")->capture_default_str();
   command->add_option("--cache-mb", arguments->cacheMegabytes, "Memory for resident panoramas, MiB")->capture_default_str();
-  command->add_option("--error-width", arguments->errorWidth, "Panorama width of the decimation's errors")
-      ->capture_default_str();
+  command->add_option("--error-width", arguments->errorWidth, "Panorama width of the decimation's errors (default: the largest "
+                      "width not above " + std::to_string(kDefaultErrorWidth) + " that divides the data set's)")
+      ->check(nonNegativeNumber());
   command->add_option("--frames", arguments->frames, "Render this many frames, write --screenshot and exit");
-  command->add_option("--screenshot", arguments->screenshot, "With --frames: PNG of the window at the last frame");
+  command->add_option("--screenshot", arguments->screenshot, "With --frames: PNG of the window at the last frame")->check(writableFile());
   command->add_option("--path", arguments->path, "With --frames: camera path file (x y z yaw pitch a line)");
   addRenderQualityOptions(*command, arguments->quality);
   command->callback([arguments] {

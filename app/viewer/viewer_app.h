@@ -15,7 +15,7 @@ struct ViewerOptions {
   std::filesystem::path selection;  // empty: start from the dense triangulation
   int width = 1280, height = 720;
   size_t cacheBytes = size_t(1) << 30;
-  int errorWidth = 256;
+  int errorWidth = 0;  // 0: the largest width not above kDefaultErrorWidth that divides the data set's
   SynthesisOptions synthesis;
   // Scripted use: render this many frames (along the path, if any), write
   // a screenshot of the window and exit.

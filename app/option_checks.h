@@ -1,0 +1,24 @@
+#pragma once
+// Checks that run while the command line is parsed, so a bad option fails
+// in one line before any data is loaded or any work starts.
+
+#include <CLI/CLI.hpp>
+
+namespace triwalk {
+
+// Numbers >= 0 (or > 0), with a message that names the bound plainly
+// (CLI11's own says "not in range 0 to 1.8e308").
+CLI::Validator nonNegativeNumber();
+CLI::Validator positiveNumber();
+// An output file: its folder exists and is writable, and it is not a folder.
+CLI::Validator writableFile();
+// An output folder: it is a writable folder, or it can be created in the
+// nearest folder above it that exists.
+CLI::Validator writableDirectory();
+
+// Gives every floating-point option of every command a check that refuses
+// NaN and infinities (CLI11's range checks let NaN through), and makes
+// parse errors one line.
+void hardenCommandLine(CLI::App& app);
+
+}  // namespace triwalk

@@ -1,0 +1,84 @@
+// The command line as a user meets it: bad options fail with one line on
+// stderr and a non-zero status before any work, leaving no output behind;
+// defaults fit the data set they are given.
+
+#include "tests/analytic_scene.h"
+#include "tests/test_support.h"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace triwalk {
+
+namespace {
+
+struct RunResult {
+  int status = 0;
+  std::string out, err;
+};
+
+RunResult runTriwalk(const testing::TemporaryDirectory& scratch, const std::string& arguments) {
+  const std::filesystem::path out = scratch / "stdout.txt", err = scratch / "stderr.txt";
+  const std::string command = std::string(TRIWALK_BINARY) + " " + arguments + " > " + out.string() + " 2> " + err.string();
+  const int status = std::system(command.c_str());
+  return {status, testing::readTextFileOrEmpty(out), testing::readTextFileOrEmpty(err)};
+}
+
+}  // namespace
+
+TEST_CASE("bad options fail in one line naming the option, before any work, and write nothing") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 3, 3, 64, 1);
+  const std::string data = " --dataset " + (directory / "data").string();
+  const std::string selection = (directory / "selection.json").string();
+  const std::string frames = (directory / "frames").string();
+  struct Case {
+    std::string arguments, message;
+  };
+  const std::vector<Case> cases = {
+      {"decimate" + data + " --out " + selection + " --max-error nan", "--max-error: must be a finite number, got nan"},
+      {"decimate" + data + " --out " + selection + " --max-error inf", "--max-error: must be a finite number, got inf"},
+      {"decimate" + data + " --out " + selection + " --max-error -1", "--max-error: must not be negative, got -1"},
+      {"decimate" + data + " --out " + selection + " --refine-radius NaN", "--refine-radius: must be a finite number"},
+      {"decimate" + data + " --out /nonexistent/folder/selection.json --target 4", "--out: cannot write /nonexistent/folder"},
+      {"decimate" + data + " --out " + (directory / "data").string() + " --target 4", "is a folder, not a file"},
+      {"decimate" + data + " --out " + selection + " --target 4 --error-width 100", "--error-width: width 100 must divide"},
+      {"decimate" + data + " --out " + selection + " --target 4 --no-such-option", "--no-such-option"},
+      {"render" + data + " --out " + frames + " --fov nan", "--fov: must be a finite number"},
+      {"render" + data + " --out " + frames + " --pitch -inf", "--pitch: must be a finite number"},
+      {"render" + data + " --out /proc/version/frames", "--out: cannot create folder /proc/version/frames"},
+      {"capture --out " + (directory / "new").string() + " --spacing nan", "--spacing: must be positive, got nan"},
+      {"capture --out " + (directory / "new").string() + " --area 0,0,nan,1", "--area: must be a finite number"},
+      {"eval" + data + " --selection " + selection + " --json /nonexistent/rows.json", "--json: cannot write"},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.arguments);
+    const RunResult result = runTriwalk(directory, c.arguments);
+    INFO("stderr: " << result.err);
+    CHECK(result.status != 0);
+    CHECK(result.err.find(c.message) != std::string::npos);
+    CHECK(std::count(result.err.begin(), result.err.end(), '\n') == 1);
+    CHECK(result.out.empty());
+    CHECK_FALSE(std::filesystem::exists(selection));
+    CHECK_FALSE(std::filesystem::exists(frames));
+    CHECK_FALSE(std::filesystem::exists(directory / "new"));
+  }
+}
+
+TEST_CASE("decimate on a data set narrower than the default error width computes its errors at the data set's width") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 3, 3, 128, 1);
+  const RunResult result = runTriwalk(directory, "decimate --quiet --target 4 --refine-radius 0 --dataset " +
+                                                     (directory / "data").string() + " --out " +
+                                                     (directory / "selection.json").string());
+  INFO("stderr: " << result.err);
+  REQUIRE(result.status == 0);
+  CHECK(result.out.find("errors at 128x64") != std::string::npos);
+  CHECK(std::filesystem::exists(directory / "selection.json"));
+}
+
+}  // namespace triwalk

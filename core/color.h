@@ -1,6 +1,6 @@
 #pragma once
 // Color spaces: the data set stores linear RGB; errors and PNGs use display
-// values (sRGB-encoded, clamped to [0, 1]), as DESIGN.md fixes.
+// values (sRGB-encoded, clamped to [0, 1]), as docs/DESIGN.md fixes.
 
 #include <glm/glm.hpp>
 

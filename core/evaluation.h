@@ -1,5 +1,5 @@
 #pragma once
-// The paper's Table 1 for a data set (DESIGN.md, "Evaluation"): for each
+// The paper's Table 1 for a data set (docs/DESIGN.md, "Evaluation"): for each
 // selection method, samples, triangles, mean and standard deviation of the
 // triangle error, and of the error at the held-out probes (each probe
 // reconstructed from the three vertices of the triangle around it, the

@@ -1,9 +1,9 @@
 #pragma once
-// The error of a triangle of reference views (DESIGN.md, "Triangle error
-// and decimation"): warp its three vertices' panoramas to destinations
+// The error of a triangle of reference views (docs/DESIGN.md, "Triangle
+// error"): warp its three vertices' panoramas to destinations
 // inside it, blend, and compare with the panoramas captured there
 // (E = alpha R + beta B). A destination is the nearest dense sample to a
-// point that is not a vertex of the triangle. The paper (and DESIGN.md)
+// point that is not a vertex of the triangle. The paper (and docs/DESIGN.md)
 // use the centroid alone; "quadrature" also uses the centroids of the
 // three sub-triangles (centroid, two vertices), weighted equally, so that
 // long or large triangles are judged over their area, not at one point.

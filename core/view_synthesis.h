@@ -1,6 +1,6 @@
 #pragma once
 // A novel view from reference panoramas: warp each, weight by distance to
-// the destination, blend (DESIGN.md, "Warp and blend").
+// the destination, blend (docs/DESIGN.md, "Warp and blend").
 
 #include "core/blend.h"
 #include "core/warp.h"

@@ -1,6 +1,6 @@
 #pragma once
 // Forward 3D warp of an equirectangular RGB-D panorama into another camera
-// (DESIGN.md, "Warp and blend"). This CPU warp is the reference: decimation
+// (docs/DESIGN.md, "Warp and blend"). This CPU warp is the reference: decimation
 // costs, evaluation and the GPU renderer's check all rest on it.
 //
 // Mesh warp: every source pixel is the world point p_s + d * omega; the

@@ -1,5 +1,5 @@
 #pragma once
-// The GPU warp (DESIGN.md, "Rendering"): the view of a pinhole camera from
+// The GPU warp (docs/DESIGN.md, "Rendering"): the view of a pinhole camera from
 // up to three reference panoramas. Each reference is drawn as its grid mesh
 // into its own layer with a depth test (its nearest surface per pixel, as
 // the CPU reference keeps one layer per source); a full-screen resolve pass

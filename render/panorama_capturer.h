@@ -3,7 +3,7 @@
 // 90-degree cube faces (shaded color, the plane of each fragment's
 // triangle, its distance), then a resampling pass into the panorama whose
 // distance is the exact ray-plane intersection along each pixel's
-// direction (the Euclidean distance DESIGN.md asks for, not z-buffer depth).
+// direction (the Euclidean distance docs/DESIGN.md asks for, not z-buffer depth).
 // Needs a current GL 4.5 context.
 
 #include "core/image.h"

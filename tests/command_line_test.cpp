@@ -81,4 +81,38 @@ TEST_CASE("decimate on a data set narrower than the default error width computes
   CHECK(std::filesystem::exists(directory / "selection.json"));
 }
 
+TEST_CASE("SIGTERM stops decimate and eval cleanly, with no partial output") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 12, 12, 256, 40);
+  const std::string data = " --dataset " + (directory / "data").string();
+  const std::filesystem::path selection = directory / "selection.json";
+  const std::filesystem::path rows = directory / "rows.json";
+  // Both commands run for tens of seconds on this data set; the signal
+  // comes after a second, in the middle of the work.
+  const std::vector<std::string> commands = {
+      "decimate" + data + " --target 4 --out " + selection.string(),
+      "eval" + data + " --selection " + (directory / "small.json").string() + " --json " + rows.string(),
+  };
+  // eval needs a selection: a quick one.
+  REQUIRE(runTriwalk(directory, "decimate --quiet --target 100 --refine-radius 0" + data + " --out " +
+                                    (directory / "small.json").string())
+              .status == 0);
+  for (const std::string& arguments : commands) {
+    CAPTURE(arguments);
+    const std::filesystem::path status = directory / "status.txt";
+    const std::string script = std::string(TRIWALK_BINARY) + " " + arguments + " > " + (directory / "log.txt").string() +
+                               " 2>&1 & pid=$!; sleep 1; kill -TERM $pid; wait $pid; echo $? > " + status.string();
+    REQUIRE(std::system(("bash -c '" + script + "'").c_str()) == 0);
+    const std::string log = testing::readTextFileOrEmpty(directory / "log.txt");
+    INFO("log: " << log);
+    CHECK(std::stoi(testing::readTextFileOrEmpty(status)) == 130);
+    CHECK(log.find("triwalk: interrupted; no output written") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(selection));
+    CHECK_FALSE(std::filesystem::exists(rows));
+    for (const auto& entry : std::filesystem::directory_iterator(directory.path())) {
+      CHECK(entry.path().filename().string().find(".tmp-") == std::string::npos);
+    }
+  }
+}
+
 }  // namespace triwalk

@@ -56,7 +56,7 @@ Panorama readPanoramaExr(const std::filesystem::path& path) {
 
     Panorama panorama{ColorImage(width, height), ScalarImage(width, height)};
     for (size_t i = 0; i < pixelCount; ++i) {
-      const glm::vec3 color(float(channels[0][i]), float(channels[1][i]), float(channels[2][i]));
+      const glm::vec3 color{float(channels[0][i]), float(channels[1][i]), float(channels[2][i])};
       if (!std::isfinite(color.r) || !std::isfinite(color.g) || !std::isfinite(color.b)) {
         throw InputError(name, "non-finite color at pixel " + std::to_string(i % size_t(width)) + "," +
                                    std::to_string(i / size_t(width)));

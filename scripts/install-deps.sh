@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian bookworm packages triwalk needs, only those missing.
-# Usage: scripts/install-deps.sh [build|test]
+# Usage: scripts/install-deps.sh [build|test|fuzz]
 #   build: compilers and libraries for the triwalk binary and its tests
 #   test:  build + Xvfb for the viewer test + the real scenes of issue 7
+#   fuzz:  build + clang 16 and libFuzzer for the harnesses in fuzz/
 set -euo pipefail
 
 profile="${1:-build}"
@@ -16,6 +17,9 @@ packages=(
 )
 if [[ "$profile" == "test" ]]; then
   packages+=(assimp-testmodels openarena-oacmp1)
+fi
+if [[ "$profile" == "fuzz" ]]; then
+  packages+=(clang-16 libclang-rt-16-dev libfuzzer-16-dev)
 fi
 
 missing=()

@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # The whole test suite on a fresh Debian bookworm machine (as root):
-# install what is missing, build with tests, run them all with CTest.
+# install what is missing, build with tests, run them all with CTest; then
+# build again with AddressSanitizer + UndefinedBehaviorSanitizer (preset
+# "asan": everything but the viewer, left out to keep CI under 30 minutes;
+# its test runs in the release build) and run every test again under them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -8,3 +11,7 @@ bash scripts/install-deps.sh test
 cmake --preset release >/dev/null
 cmake --build --preset release
 ctest --preset release --parallel 2
+
+cmake --preset asan >/dev/null
+cmake --build --preset asan
+ctest --preset asan --parallel 2

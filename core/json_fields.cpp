@@ -11,8 +11,9 @@ nlohmann::json readJsonFile(const std::filesystem::path& path) {
   const std::string text = readTextFile(path);
   try {
     return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& error) {
-    // nlohmann's message starts with its own id in brackets; keep the readable part.
+  } catch (const nlohmann::json::exception& error) {
+    // Syntax errors, and numbers that overflow a double (found by the
+    // manifest fuzzer). nlohmann's message starts with its own id in brackets; keep the readable part.
     std::string message = error.what();
     const size_t bracket = message.find("] ");
     if (bracket != std::string::npos) message = message.substr(bracket + 2);

@@ -1,0 +1,57 @@
+// Inputs the fuzzers (fuzz/) once crashed a reader with: each must now be
+// refused with an InputError that names the file, as any bad input is.
+
+#include "core/camera_path.h"
+#include "core/dataset.h"
+#include "core/exr_io.h"
+#include "core/json_fields.h"
+#include "core/selection.h"
+#include "core/walkable_region.h"
+#include "tests/test_support.h"
+
+#include <doctest/doctest.h>
+
+#include <functional>
+#include <map>
+
+namespace triwalk {
+
+TEST_CASE("inputs that crashed a fuzzer are refused with a one-line error") {
+  const std::filesystem::path root = std::filesystem::path(TRIWALK_SOURCE_DIR) / "fuzz";
+  const std::filesystem::path seedDataset = root / "seeds/dataset";
+  testing::TemporaryDirectory directory;
+  std::filesystem::copy(seedDataset, directory / "dataset", std::filesystem::copy_options::recursive);
+  const Dataset dataset = Dataset::open(seedDataset);
+
+  // Each reader as its harness calls it, on a copy of the input named as
+  // the reader expects.
+  const std::map<std::string, std::function<std::filesystem::path(const std::filesystem::path&)>> readers = {
+      {"manifest", [&](const std::filesystem::path& input) {
+         const std::filesystem::path manifest = directory / "dataset" / kManifestFileName;
+         std::filesystem::copy_file(input, manifest, std::filesystem::copy_options::overwrite_existing);
+         Dataset::open(directory / "dataset");
+         return manifest;
+       }},
+      {"exr", [](const std::filesystem::path& input) { readPanoramaExr(input); return input; }},
+      {"selection", [&](const std::filesystem::path& input) { readSelection(input, dataset); return input; }},
+      {"camera_path", [](const std::filesystem::path& input) { readCameraPath(input); return input; }},
+      {"region", [](const std::filesystem::path& input) {
+         WalkableRegion::fromJson(readJsonFile(input), input.string());
+         return input;
+       }},
+  };
+  size_t inputs = 0;
+  for (const auto& [reader, read] : readers) {
+    const std::filesystem::path folder = root / "regressions" / reader;
+    if (!std::filesystem::exists(folder)) continue;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+      CAPTURE(entry.path());
+      const std::string subject = reader == "manifest" ? std::string(kManifestFileName) : entry.path().filename().string();
+      testing::requireInputError([&] { read(entry.path()); }, subject, "");
+      ++inputs;
+    }
+  }
+  CHECK(inputs >= 1);
+}
+
+}  // namespace triwalk

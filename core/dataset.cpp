@@ -161,13 +161,7 @@ int Dataset::largestWidthAtMost(int limit) const {
 Panorama Dataset::loadView(const ViewRecord& view, int width) const {
   const int factor = downsamplingFactor(width, "width");
   const std::filesystem::path path = directory_ / view.file;
-  Panorama panorama = readPanoramaExr(path);
-  if (panorama.width() != manifest_.width || panorama.height() != manifest_.height) {
-    throw InputError(path.string(), "size " + std::to_string(panorama.width()) + "x" +
-                                        std::to_string(panorama.height()) + " but the manifest says " +
-                                        std::to_string(manifest_.width) + "x" + std::to_string(manifest_.height));
-  }
-  return downsamplePanorama(panorama, factor);
+  return downsamplePanorama(readPanoramaExr(path, glm::ivec2(manifest_.width, manifest_.height)), factor);
 }
 
 WalkableRegion Dataset::walkableRegion() const {

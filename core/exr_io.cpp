@@ -24,16 +24,27 @@ constexpr const char* kDistanceChannel = "Z";
 
 }  // namespace
 
-Panorama readPanoramaExr(const std::filesystem::path& path) {
+Panorama readPanoramaExr(const std::filesystem::path& path, std::optional<glm::ivec2> expectedSize) {
   const std::string name = path.string();
   if (!std::filesystem::exists(path)) throw InputError(name, "file does not exist");
   try {
     Imf::InputFile file(name.c_str());
     const Imf::Header& header = file.header();
     const Imath::Box2i window = header.dataWindow();
-    const int width = window.max.x - window.min.x + 1;
-    const int height = window.max.y - window.min.y + 1;
-    if (width <= 0 || height <= 0) throw InputError(name, "empty image");
+    // In 64 bits: a hostile data window overflows int.
+    const int64_t windowWidth = int64_t(window.max.x) - int64_t(window.min.x) + 1;
+    const int64_t windowHeight = int64_t(window.max.y) - int64_t(window.min.y) + 1;
+    if (windowWidth <= 0 || windowHeight <= 0) throw InputError(name, "empty image");
+    const std::string size = std::to_string(windowWidth) + "x" + std::to_string(windowHeight);
+    if (windowWidth > kMaxPanoramaWidth || windowHeight > kMaxPanoramaWidth / 2) {
+      throw InputError(name, "size " + size + " is larger than triwalk reads (" + std::to_string(kMaxPanoramaWidth) + "x" +
+                                 std::to_string(kMaxPanoramaWidth / 2) + ")");
+    }
+    const int width = int(windowWidth), height = int(windowHeight);
+    if (expectedSize && (width != expectedSize->x || height != expectedSize->y)) {
+      throw InputError(name, "size " + size + " but the manifest says " + std::to_string(expectedSize->x) + "x" +
+                                 std::to_string(expectedSize->y));
+    }
 
     for (const char* channel : kColorChannels) {
       if (!header.channels().findChannel(channel)) {

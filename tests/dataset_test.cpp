@@ -234,6 +234,16 @@ TEST_CASE("bad data sets give one-line errors naming the file") {
     const Dataset dataset = Dataset::open(root);
     requireInputError([&] { dataset.loadView(dataset.sample(1)); }, "samples/s1.exr", "negative distance");
   }
+  SUBCASE("EXR whose header claims a size larger than triwalk reads") {
+    // Only the header is written: the reader must refuse it before
+    // allocating 40000 x 20000 pixels.
+    Imf::Header header(40000, 20000);
+    for (const char* name : {"R", "G", "B", "Z"}) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+    { Imf::OutputFile file((root / "samples/s1.exr").string().c_str(), header); }
+    const Dataset dataset = Dataset::open(root);
+    requireInputError([&] { dataset.loadView(dataset.sample(1)); }, "samples/s1.exr",
+                      "size 40000x20000 is larger than triwalk reads (32768x16384)");
+  }
   SUBCASE("corrupt EXR") {
     std::ofstream(root / "samples/s1.exr", std::ios::binary) << "this is not an OpenEXR file";
     const Dataset dataset = Dataset::open(root);

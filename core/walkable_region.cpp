@@ -199,13 +199,20 @@ std::vector<double> sampleAreaWeights(std::span<const glm::dvec2> positions, con
   region.bounds(lower, upper);
   const double area = region.area();
   if (!(area > 0.0)) return std::vector<double>(n, 1.0);
-  const double cell = std::sqrt(area / 200000.0);
+  // About 200,000 raster cells over the region's bounding box, and never
+  // more than 20,000 along one side: a thin or sprawling region (the
+  // region fuzzer found one 1214 m long and 3 m wide) costs no more than
+  // a square one.
+  const glm::dvec2 extent = upper - lower;
+  const double cell = std::max(std::sqrt(extent.x * extent.y / 200000.0), std::max(extent.x, extent.y) / 20000.0);
 
   // Buckets of samples for the nearest-sample search.
   glm::dvec2 sampleLower(std::numeric_limits<double>::max()), sampleUpper(std::numeric_limits<double>::lowest());
   for (glm::dvec2 p : positions) sampleLower = glm::min(sampleLower, p), sampleUpper = glm::max(sampleUpper, p);
   const glm::dvec2 gridLower = glm::min(sampleLower, lower), gridUpper = glm::max(sampleUpper, upper);
-  const double bucket = std::max(std::sqrt((gridUpper.x - gridLower.x) * (gridUpper.y - gridLower.y) / double(n)), 1e-6);
+  const glm::dvec2 gridExtent = gridUpper - gridLower;
+  const double bucket = std::max({std::sqrt(gridExtent.x * gridExtent.y / double(n)),
+                                  std::max(gridExtent.x, gridExtent.y) / 1024.0, 1e-6});
   const int columns = std::max(1, int((gridUpper.x - gridLower.x) / bucket) + 1);
   const int rows = std::max(1, int((gridUpper.y - gridLower.y) / bucket) + 1);
   std::vector<std::vector<int>> buckets(size_t(columns) * size_t(rows));

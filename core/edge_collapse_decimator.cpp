@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <set>
+#include <unordered_set>
 
 namespace triwalk {
 
@@ -20,6 +21,23 @@ uint64_t tripleKey(const Triangle& triangle) {
 }
 
 bool hasVertex(const Triangle& t, int v) { return t[0] == v || t[1] == v || t[2] == v; }
+
+// The errors of `missing`, in chunks of 64 when progress is shown (the
+// first costing, thousands of errors), so that it reports and stops on
+// Ctrl-C; each error is independent of the others.
+template <class Request, class Compute>
+std::vector<double> computeInChunks(const std::vector<Request>& missing, ProgressReporter* progress, Compute compute) {
+  std::vector<double> computed(missing.size());
+  const size_t chunk = progress ? 64 : missing.size();
+  if (progress) progress->setTotal(progress->done() + missing.size());
+  for (size_t first = 0; first < missing.size(); first += chunk) {
+    if (progress) throwIfInterrupted();
+    const size_t count = std::min(chunk, missing.size() - first);
+    compute(std::span<const Request>(missing).subspan(first, count), std::span<double>(computed).subspan(first, count));
+    if (progress) progress->advance(count);
+  }
+  return computed;
+}
 
 }  // namespace
 
@@ -377,47 +395,30 @@ void EdgeCollapseDecimator::ensureErrors(const std::vector<Triangle>& triangles,
     missing.push_back(t);
   }
   if (missing.empty()) return;
-  std::vector<double> computed(missing.size());
-  // In chunks when progress is shown (the first costing, thousands of
-  // errors), so that it reports and stops on Ctrl-C; each error is
-  // independent of the others.
-  const size_t chunk = progress ? 64 : missing.size();
-  if (progress) progress->setTotal(progress->done() + missing.size());
-  for (size_t first = 0; first < missing.size(); first += chunk) {
-    if (progress) throwIfInterrupted();
-    const size_t count = std::min(chunk, missing.size() - first);
-    errors_.triangles->computeErrors(std::span<const Triangle>(missing).subspan(first, count),
-                                     std::span<double>(computed).subspan(first, count));
-    if (progress) progress->advance(count);
-  }
+  const std::vector<double> computed =
+      computeInChunks(missing, progress, [&](std::span<const Triangle> batch, std::span<double> batchErrors) {
+        errors_.triangles->computeErrors(batch, batchErrors);
+      });
   for (size_t i = 0; i < missing.size(); ++i) cache_[tripleKey(missing[i])] = computed[i];
   statistics_.errorsComputed += missing.size();
 }
 
 void EdgeCollapseDecimator::ensureSampleErrors(const std::vector<SampleReconstruction>& requests, ProgressReporter* progress) {
   std::vector<SampleReconstruction> missing;
-  std::unordered_map<SampleKey, char, SampleKeyHash> queued;
+  std::unordered_set<SampleKey, SampleKeyHash> queued;
   for (const SampleReconstruction& request : requests) {
     const SampleKey key{tripleKey(request.references), request.destination};
-    if (sampleCache_.count(key) || !queued.emplace(key, 1).second) {
+    if (sampleCache_.count(key) || !queued.insert(key).second) {
       ++statistics_.cacheHits;
       continue;
     }
     missing.push_back(request);
   }
   if (missing.empty()) return;
-  std::vector<double> computed(missing.size());
-  // In chunks when progress is shown (the first costing), so that it
-  // reports and stops on Ctrl-C; each error is independent of the others.
-  const size_t chunk = progress ? 64 : missing.size();
-  if (progress) progress->setTotal(progress->done() + missing.size());
-  for (size_t first = 0; first < missing.size(); first += chunk) {
-    if (progress) throwIfInterrupted();
-    const size_t count = std::min(chunk, missing.size() - first);
-    errors_.samples->computeReconstructionErrors(std::span<const SampleReconstruction>(missing).subspan(first, count),
-                                                 std::span<double>(computed).subspan(first, count));
-    if (progress) progress->advance(count);
-  }
+  const std::vector<double> computed = computeInChunks(
+      missing, progress, [&](std::span<const SampleReconstruction> batch, std::span<double> batchErrors) {
+        errors_.samples->computeReconstructionErrors(batch, batchErrors);
+      });
   for (size_t i = 0; i < missing.size(); ++i) {
     sampleCache_[SampleKey{tripleKey(missing[i].references), missing[i].destination}] = computed[i];
   }

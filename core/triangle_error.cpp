@@ -165,49 +165,21 @@ void DatasetTriangleErrors::computeReconstructionErrors(std::span<const SampleRe
   });
 }
 
-}  // namespace triwalk
+namespace {
 
-namespace triwalk {
-
-void CachingTriangleErrors::computeErrors(std::span<const Triangle> triangles, std::span<double> errors) {
-  std::vector<Triangle> missing;
+// Both caches: answer what is known under the lock, compute the rest
+// outside it (the long part, in parallel inside the source), then store.
+template <class Request, class Key, class KeyOf, class Compute>
+void serveFromCache(std::mutex& mutex, std::map<Key, double>& known, std::span<const Request> requests,
+                    std::span<double> errors, KeyOf keyOf, Compute compute) {
+  std::vector<Request> missing;
   std::vector<size_t> missingAt;
   {
-    std::lock_guard lock(mutex_);
-    for (size_t i = 0; i < triangles.size(); ++i) {
-      const auto known = known_.find(sortedTriangle(triangles[i]));
-      if (known != known_.end()) {
-        errors[i] = known->second;
-      } else {
-        missing.push_back(triangles[i]);
-        missingAt.push_back(i);
-      }
-    }
-  }
-  if (missing.empty()) return;
-  std::vector<double> computed(missing.size());
-  source_.computeErrors(missing, computed);
-  std::lock_guard lock(mutex_);
-  for (size_t j = 0; j < missing.size(); ++j) {
-    errors[missingAt[j]] = computed[j];
-    known_[sortedTriangle(missing[j])] = computed[j];
-  }
-}
-
-}  // namespace triwalk
-
-namespace triwalk {
-
-void CachingReconstructionErrors::computeReconstructionErrors(std::span<const SampleReconstruction> requests,
-                                                              std::span<double> errors) {
-  std::vector<SampleReconstruction> missing;
-  std::vector<size_t> missingAt;
-  {
-    std::lock_guard lock(mutex_);
+    std::lock_guard lock(mutex);
     for (size_t i = 0; i < requests.size(); ++i) {
-      const auto known = known_.find(requests[i]);
-      if (known != known_.end()) {
-        errors[i] = known->second;
+      const auto found = known.find(keyOf(requests[i]));
+      if (found != known.end()) {
+        errors[i] = found->second;
       } else {
         missing.push_back(requests[i]);
         missingAt.push_back(i);
@@ -216,12 +188,28 @@ void CachingReconstructionErrors::computeReconstructionErrors(std::span<const Sa
   }
   if (missing.empty()) return;
   std::vector<double> computed(missing.size());
-  source_.computeReconstructionErrors(missing, computed);
-  std::lock_guard lock(mutex_);
+  compute(missing, computed);
+  std::lock_guard lock(mutex);
   for (size_t j = 0; j < missing.size(); ++j) {
     errors[missingAt[j]] = computed[j];
-    known_[missing[j]] = computed[j];
+    known[keyOf(missing[j])] = computed[j];
   }
+}
+
+}  // namespace
+
+void CachingTriangleErrors::computeErrors(std::span<const Triangle> triangles, std::span<double> errors) {
+  serveFromCache(mutex_, known_, triangles, errors, sortedTriangle,
+                 [&](std::span<const Triangle> missing, std::span<double> computed) { source_.computeErrors(missing, computed); });
+}
+
+void CachingReconstructionErrors::computeReconstructionErrors(std::span<const SampleReconstruction> requests,
+                                                              std::span<double> errors) {
+  serveFromCache(
+      mutex_, known_, requests, errors, [](const SampleReconstruction& request) { return request; },
+      [&](std::span<const SampleReconstruction> missing, std::span<double> computed) {
+        source_.computeReconstructionErrors(missing, computed);
+      });
 }
 
 }  // namespace triwalk

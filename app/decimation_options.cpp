@@ -18,8 +18,7 @@ void addErrorOptions(CLI::App& command, ErrorArguments& arguments) {
 
 TriangleErrorSettings triangleErrorSettings(const ErrorArguments& arguments, const Dataset& dataset) {
   TriangleErrorSettings settings;
-  settings.width = arguments.width > 0 ? arguments.width : dataset.largestWidthAtMost(kDefaultErrorWidth);
-  dataset.downsamplingFactor(settings.width, "--error-width");
+  settings.width = errorWidthFor(dataset, arguments.width);
   settings.destinations = parseTriangleDestinations(arguments.destinations);
   settings.synthesis = synthesisOptions(arguments.quality);
   settings.error = errorOptions(arguments.quality);

@@ -87,6 +87,12 @@ SuiteSpec readSuiteSpec(const std::filesystem::path& path) {
   return spec;
 }
 
+double mean(const std::vector<double>& values) {
+  double sum = 0.0;
+  for (double v : values) sum += v;
+  return values.empty() ? 0.0 : sum / double(values.size());
+}
+
 // Edge collapse against one baseline at the probes: the paired difference
 // relative to the baseline's mean.
 struct Comparison {
@@ -95,15 +101,8 @@ struct Comparison {
 
 Comparison compare(const std::vector<double>& candidate, const std::vector<double>& baseline) {
   const PairedComparison paired = compareProbeErrors(candidate, baseline);
-  double mean = 0.0;
-  for (double v : baseline) mean += v / double(baseline.size());
-  return {paired.meanDifference / mean, paired.standardError / mean};
-}
-
-double mean(const std::vector<double>& values) {
-  double sum = 0.0;
-  for (double v : values) sum += v;
-  return values.empty() ? 0.0 : sum / double(values.size());
+  const double baselineMean = mean(baseline);
+  return {paired.meanDifference / baselineMean, paired.standardError / baselineMean};
 }
 
 struct SuiteRow {

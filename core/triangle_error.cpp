@@ -11,6 +11,12 @@
 
 namespace triwalk {
 
+int errorWidthFor(const Dataset& dataset, int requested) {
+  const int width = requested > 0 ? requested : dataset.largestWidthAtMost(kDefaultErrorWidth);
+  dataset.downsamplingFactor(width, "--error-width");
+  return width;
+}
+
 DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const TriangleErrorSettings& settings, bool quiet)
     : dataset_(dataset), settings_(settings), layerCache_(settings.layerCacheBytes) {
   dataset.downsamplingFactor(settings.width, "--error-width");

@@ -62,6 +62,10 @@ TriangleDestinations parseTriangleDestinations(const std::string& name);
 // docs/RESULTS.md measure at); commands pick the largest width not above it
 // that divides the data set's (Dataset::largestWidthAtMost).
 inline constexpr int kDefaultErrorWidth = 256;
+// The error width for a request: `requested` if given (> 0), else that
+// default; throws InputError naming --error-width if it does not divide the
+// data set's width.
+int errorWidthFor(const Dataset& dataset, int requested);
 
 struct TriangleErrorSettings {
   int width = kDefaultErrorWidth;  // panorama width the errors are computed at

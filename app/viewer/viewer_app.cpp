@@ -56,8 +56,7 @@ public:
     std::optional<Selection> selection;
     if (!options.selection.empty()) selection = readSelection(options.selection, dataset_);
     TriangleErrorSettings errorSettings;
-    errorSettings.width = options.errorWidth > 0 ? options.errorWidth : dataset_.largestWidthAtMost(kDefaultErrorWidth);
-    dataset_.downsamplingFactor(errorSettings.width, "--error-width");
+    errorSettings.width = errorWidthFor(dataset_, options.errorWidth);
     errorSettings.synthesis = options.synthesis;
     session_ = std::make_unique<DecimationSession>(dataset_, errorSettings, DecimationOptions{}, selection);
     state_.dataset = &dataset_;

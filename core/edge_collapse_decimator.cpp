@@ -211,7 +211,7 @@ bool EdgeCollapseDecimator::simulate(int a, int b, int placement, PlacementKind 
   return true;
 }
 
-// The paper's rule (DESIGN): the boundary never moves. A boundary vertex
+// The paper's rule (docs/DESIGN.md, "Selection"): the boundary never moves. A boundary vertex
 // may be removed only where it lies on the straight segment between its
 // boundary neighbours, and the placement must lie on that segment.
 bool EdgeCollapseDecimator::keepsFixedBoundary(int a, int b, int placement, const std::vector<int>& boundaryA,
@@ -267,8 +267,7 @@ bool EdgeCollapseDecimator::staysInside(const Plan& plan) const {
       bool inside = false;
       for (int r : plan.removed) {
         const Triangle& tri = triangles_[size_t(r)];
-        inside |= distanceToTriangle(positions_[size_t(tri[0])], positions_[size_t(tri[1])], positions_[size_t(tri[2])],
-                                     midpoint) == 0.0;
+        inside |= distanceToTriangle(positions_, tri, midpoint) == 0.0;
         if (inside) break;
       }
       if (!inside) return false;
@@ -314,7 +313,7 @@ void EdgeCollapseDecimator::assignServedSamples(int a, int b, Plan& plan) const 
     distance = kInfinity;
     for (size_t k = 0; k < plan.added.size() && distance > 0.0; ++k) {
       const Triangle& t = plan.added[k];
-      const double d = distanceToTriangle(positions_[size_t(t[0])], positions_[size_t(t[1])], positions_[size_t(t[2])], point);
+      const double d = distanceToTriangle(positions_, t, point);
       if (d < distance) distance = d, home = int(k);
     }
     return home;
@@ -337,8 +336,7 @@ void EdgeCollapseDecimator::assignServedSamples(int a, int b, Plan& plan) const 
       for (int t = 0; t < int(triangles_.size()); ++t) {
         if (!alive_[size_t(t)] || std::binary_search(plan.removed.begin(), plan.removed.end(), t)) continue;
         const Triangle& tri = triangles_[size_t(t)];
-        const double d =
-            distanceToTriangle(positions_[size_t(tri[0])], positions_[size_t(tri[1])], positions_[size_t(tri[2])], point);
+        const double d = distanceToTriangle(positions_, tri, point);
         if (d < distance) distance = d, home = -1 - t;
       }
     }

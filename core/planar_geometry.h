@@ -27,6 +27,10 @@ int orientation(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c);
 // Distance from point to the closed counter-clockwise triangle (a, b, c):
 // exactly 0 inside or on its edges (exact predicate), else to the nearest edge.
 double distanceToTriangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, glm::dvec2 point);
+// The same for a triangle of indices into positions.
+inline double distanceToTriangle(std::span<const glm::dvec2> positions, const Triangle& t, glm::dvec2 point) {
+  return distanceToTriangle(positions[size_t(t[0])], positions[size_t(t[1])], positions[size_t(t[2])], point);
+}
 
 // Rotates a triangle to start at its smallest index (same orientation).
 Triangle canonicalTriangle(Triangle triangle);

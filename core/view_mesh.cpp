@@ -98,8 +98,7 @@ bool ViewMesh::contains(int triangle, glm::dvec2 point) const {
 }
 
 double ViewMesh::distanceToTriangle(int triangle, glm::dvec2 point) const {
-  const Triangle& t = triangles_[size_t(triangle)];
-  return triwalk::distanceToTriangle(position(t[0]), position(t[1]), position(t[2]), point);
+  return triwalk::distanceToTriangle(positions_, triangles_[size_t(triangle)], point);
 }
 
 int ViewMesh::locate(glm::dvec2 point, int hint) const {

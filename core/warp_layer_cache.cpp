@@ -8,13 +8,13 @@
 namespace triwalk {
 
 CompactLayer::CompactLayer(const WarpLayer& layer) : values_(4 * layer.covered.size()) {
-  const uint16_t notCovered = Imath::half(std::numeric_limits<float>::quiet_NaN()).bits();
+  const Imath::half notCovered(std::numeric_limits<float>::quiet_NaN());
   for (size_t i = 0; i < layer.covered.size(); ++i) {
     const glm::vec3 color = layer.color.pixels[i];
-    values_[4 * i + 0] = Imath::half(color.r).bits();
-    values_[4 * i + 1] = Imath::half(color.g).bits();
-    values_[4 * i + 2] = Imath::half(color.b).bits();
-    values_[4 * i + 3] = layer.covered[i] ? Imath::half(layer.distance.pixels[i]).bits() : notCovered;
+    values_[4 * i + 0] = Imath::half(color.r);
+    values_[4 * i + 1] = Imath::half(color.g);
+    values_[4 * i + 2] = Imath::half(color.b);
+    values_[4 * i + 3] = layer.covered[i] ? Imath::half(layer.distance.pixels[i]) : notCovered;
   }
 }
 

@@ -27,22 +27,16 @@ class CompactLayer {
 public:
   explicit CompactLayer(const WarpLayer& layer);
 
-  bool coveredAt(size_t pixel) const { return !std::isnan(halfToFloat(values_[4 * pixel + 3])); }
-  float distanceAt(size_t pixel) const { return halfToFloat(values_[4 * pixel + 3]); }
+  bool coveredAt(size_t pixel) const { return !values_[4 * pixel + 3].isNan(); }
+  float distanceAt(size_t pixel) const { return float(values_[4 * pixel + 3]); }
   glm::vec3 colorAt(size_t pixel) const {
-    const uint16_t* v = &values_[4 * pixel];
-    return {halfToFloat(v[0]), halfToFloat(v[1]), halfToFloat(v[2])};
+    const Imath::half* v = &values_[4 * pixel];
+    return {float(v[0]), float(v[1]), float(v[2])};
   }
-  size_t bytes() const { return values_.size() * sizeof(uint16_t); }
-
-  static float halfToFloat(uint16_t bits) {
-    Imath::half value;
-    value.setBits(bits);
-    return float(value);
-  }
+  size_t bytes() const { return values_.size() * sizeof(Imath::half); }
 
 private:
-  std::vector<uint16_t> values_;
+  std::vector<Imath::half> values_;
 };
 
 class WarpLayerCache {

@@ -2,10 +2,10 @@
 // Thin main: parse the command line, run the chosen subcommand, turn
 // failures into one line on stderr and a non-zero exit status.
 
-#include "app/commands.h"
-#include "app/option_checks.h"
-#include "core/errors.h"
-#include "render/gl_context.h"
+#include "app/commands/commands.h"
+#include "app/setup/option_checks.h"
+#include "core/support/errors.h"
+#include "render/gl/gl_context.h"
 
 #include <cstdio>
 

@@ -1,7 +1,7 @@
 // Fuzzes readCameraPath: any bytes as a camera path file.
 
-#include "core/camera_path.h"
-#include "core/errors.h"
+#include "core/io/camera_path.h"
+#include "core/support/errors.h"
 #include "fuzz/fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

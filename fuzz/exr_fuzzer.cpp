@@ -1,7 +1,7 @@
 // Fuzzes readPanoramaExr: any bytes as an OpenEXR file.
 
-#include "core/errors.h"
-#include "core/exr_io.h"
+#include "core/io/exr_io.h"
+#include "core/support/errors.h"
 #include "fuzz/fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -2,8 +2,8 @@
 // view files of a real capture (fuzz/seeds/dataset), so that a manifest
 // that parses also reaches the file checks.
 
-#include "core/dataset.h"
-#include "core/errors.h"
+#include "core/io/dataset.h"
+#include "core/support/errors.h"
 #include "fuzz/fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -2,9 +2,9 @@
 // manifest's "walkable" object; a region that validates is also sampled
 // (containment, area, area weights), as decimate does.
 
-#include "core/errors.h"
-#include "core/json_fields.h"
-#include "core/walkable_region.h"
+#include "core/geometry/walkable_region.h"
+#include "core/io/json_fields.h"
+#include "core/support/errors.h"
 #include "fuzz/fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

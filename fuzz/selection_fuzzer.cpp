@@ -1,9 +1,9 @@
 // Fuzzes readSelection against the real capture in fuzz/seeds/dataset
 // (whose ids and positions a selection must match).
 
-#include "core/dataset.h"
-#include "core/errors.h"
-#include "core/selection.h"
+#include "core/io/dataset.h"
+#include "core/selection/selection.h"
+#include "core/support/errors.h"
 #include "fuzz/fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -1,4 +1,4 @@
-// Mirror of core/projection.h (EquirectProjection): keep the two identical.
+// Mirror of core/geometry/projection.h (EquirectProjection): keep the two identical.
 const float kPi = 3.14159265358979323846;
 
 // Continuous image point (x, y) of a W x H panorama -> unit world direction.

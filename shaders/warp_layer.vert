@@ -1,6 +1,6 @@
 #version 450 core
 // One reference panorama as a grid mesh displaced by its distance texture
-// (the CPU reference warp's mesh, core/warp.h): vertex i is pixel
+// (the CPU reference warp's mesh, core/synthesis/warp.h): vertex i is pixel
 // (i mod W, i div W), W*H and W*H+1 are the poles; a vertex at infinity
 // (sky) is a direction, w = 0.
 #include "projection.glsl"

@@ -1,6 +1,6 @@
 #version 450 core
 // Blend of the reference layers (paper Eq. 1-2, made relative; the same
-// rule as core/blend.cpp): z_front is the nearest distance over layers,
+// rule as core/synthesis/blend.cpp): z_front is the nearest distance over layers,
 // layers within epsilon * z_front of it average with weights
 // 1 / max(dist(D, S_k), r_min); pixels no layer covers are holes.
 // Writes display (sRGB-encoded) color.

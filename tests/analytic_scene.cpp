@@ -1,6 +1,6 @@
 #include "tests/analytic_scene.h"
 
-#include "core/projection.h"
+#include "core/geometry/projection.h"
 
 #include <cmath>
 #include <limits>
@@ -91,8 +91,8 @@ Panorama renderPanorama(const AnalyticScene& scene, glm::vec3 position, int widt
 
 }  // namespace triwalk::testing
 
-#include "core/dataset.h"
-#include "core/exr_io.h"
+#include "core/io/dataset.h"
+#include "core/io/exr_io.h"
 
 #include <algorithm>
 #include <random>

@@ -5,7 +5,7 @@
 // smooth functions of the hit point (so interpolation errors stay small)
 // except where a test asks for a sharp stripe.
 
-#include "core/image.h"
+#include "core/image/image.h"
 
 #include <glm/glm.hpp>
 

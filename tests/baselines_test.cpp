@@ -1,9 +1,9 @@
 // The baselines edge collapse is compared with.
 
-#include "core/baselines.h"
-#include "core/dataset.h"
-#include "core/evaluation.h"
-#include "core/selection.h"
+#include "core/io/dataset.h"
+#include "core/selection/baselines.h"
+#include "core/selection/evaluation.h"
+#include "core/selection/selection.h"
 #include "tests/analytic_scene.h"
 #include "tests/test_support.h"
 

@@ -1,7 +1,7 @@
 // Camera path files: exact round trip, and one error per kind of bad line.
 
-#include "core/atomic_file.h"
-#include "core/camera_path.h"
+#include "core/io/atomic_file.h"
+#include "core/io/camera_path.h"
 #include "tests/test_support.h"
 
 #include <doctest/doctest.h>

@@ -1,13 +1,13 @@
 // Headless capture: exact distances and colors inside a box of known size,
 // EGL and OSMesa agree, and the built-in scene captures as designed.
 
-#include "core/dataset.h"
-#include "core/projection.h"
-#include "render/dataset_capture.h"
-#include "render/gl_context.h"
-#include "render/mesh_builder.h"
-#include "render/panorama_capturer.h"
-#include "render/scene_description.h"
+#include "core/geometry/projection.h"
+#include "core/io/dataset.h"
+#include "render/capture/dataset_capture.h"
+#include "render/capture/panorama_capturer.h"
+#include "render/gl/gl_context.h"
+#include "render/scene/mesh_builder.h"
+#include "render/scene/scene_description.h"
 #include "tests/test_support.h"
 
 #include <doctest/doctest.h>

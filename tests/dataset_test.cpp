@@ -1,8 +1,8 @@
 // Data set format: exact round trips and one clear error per kind of bad input.
 
-#include "core/dataset.h"
-#include "core/exr_io.h"
-#include "core/json_fields.h"
+#include "core/io/dataset.h"
+#include "core/io/exr_io.h"
+#include "core/io/json_fields.h"
 #include "tests/test_support.h"
 
 #include <ImfChannelList.h>

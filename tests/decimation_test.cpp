@@ -1,14 +1,14 @@
 // Edge-collapse decimation on tiny hand-built meshes with exact expected
 // behavior, and against a decimator rebuilt from scratch at every step.
 
-#include "core/edge_collapse_decimator.h"
-#include "core/atomic_file.h"
-#include "core/dataset.h"
-#include "core/errors.h"
-#include "core/progress.h"
-#include "core/selection.h"
-#include "core/triangle_error.h"
-#include "core/view_mesh.h"
+#include "core/geometry/view_mesh.h"
+#include "core/io/atomic_file.h"
+#include "core/io/dataset.h"
+#include "core/selection/edge_collapse_decimator.h"
+#include "core/selection/selection.h"
+#include "core/selection/triangle_error.h"
+#include "core/support/errors.h"
+#include "core/support/progress.h"
 #include "tests/analytic_scene.h"
 #include "tests/test_support.h"
 

@@ -2,12 +2,12 @@
 // now be read, or refused with an InputError that names the file, as any
 // bad input is; any other exception fails.
 
-#include "core/camera_path.h"
-#include "core/dataset.h"
-#include "core/exr_io.h"
-#include "core/json_fields.h"
-#include "core/selection.h"
-#include "core/walkable_region.h"
+#include "core/geometry/walkable_region.h"
+#include "core/io/camera_path.h"
+#include "core/io/dataset.h"
+#include "core/io/exr_io.h"
+#include "core/io/json_fields.h"
+#include "core/selection/selection.h"
 #include "tests/test_support.h"
 
 #include <doctest/doctest.h>

@@ -1,11 +1,11 @@
 // Real scenes through Assimp: the furnished house (IFC) and a Quake 3
 // level (.pk3) from Debian's packages, and bad scene files.
 
-#include "core/errors.h"
-#include "render/assimp_scene.h"
-#include "render/gl_context.h"
-#include "render/panorama_capturer.h"
-#include "render/walkable_area.h"
+#include "core/support/errors.h"
+#include "render/capture/panorama_capturer.h"
+#include "render/capture/walkable_area.h"
+#include "render/gl/gl_context.h"
+#include "render/scene/assimp_scene.h"
 #include "tests/test_support.h"
 
 #include <doctest/doctest.h>

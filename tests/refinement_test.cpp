@@ -2,13 +2,13 @@
 // while that lowers the mean error over the dense samples, on tiny grids
 // with errors whose best answer is known, and on a captured data set.
 
-#include "core/atomic_file.h"
-#include "core/dataset.h"
-#include "core/errors.h"
-#include "core/progress.h"
-#include "core/selection.h"
-#include "core/selection_refinement.h"
-#include "core/view_mesh.h"
+#include "core/geometry/view_mesh.h"
+#include "core/io/atomic_file.h"
+#include "core/io/dataset.h"
+#include "core/selection/selection.h"
+#include "core/selection/selection_refinement.h"
+#include "core/support/errors.h"
+#include "core/support/progress.h"
 #include "tests/analytic_scene.h"
 #include "tests/test_support.h"
 

@@ -3,13 +3,13 @@
 // reconstructions fail, and its estimate of a triangle's error agrees with
 // held-out probes better than the paper's one destination at the centroid.
 
-#include "core/baselines.h"
-#include "core/edge_collapse_decimator.h"
-#include "core/dataset.h"
-#include "core/evaluation.h"
-#include "core/reference_selection.h"
-#include "core/selection.h"
-#include "core/triangle_error.h"
+#include "core/io/dataset.h"
+#include "core/selection/baselines.h"
+#include "core/selection/edge_collapse_decimator.h"
+#include "core/selection/evaluation.h"
+#include "core/selection/reference_selection.h"
+#include "core/selection/selection.h"
+#include "core/selection/triangle_error.h"
 #include "tests/analytic_scene.h"
 #include "tests/test_support.h"
 

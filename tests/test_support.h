@@ -2,7 +2,7 @@
 // Helpers shared by the test suites: scratch directories and checks that
 // an InputError names the right file.
 
-#include "core/errors.h"
+#include "core/support/errors.h"
 
 #include <doctest/doctest.h>
 

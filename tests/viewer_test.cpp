@@ -2,7 +2,7 @@
 // (xvfb-run): a few frames of a small data set, then its screenshot must
 // show the walkthrough and the panels.
 
-#include "core/png_io.h"
+#include "core/io/png_io.h"
 #include "tests/analytic_scene.h"
 #include "tests/test_support.h"
 

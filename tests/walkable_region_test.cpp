@@ -1,8 +1,8 @@
 // The walkable region: polygons with holes, their validation, and each
 // sample's share of the area.
 
-#include "core/errors.h"
-#include "core/walkable_region.h"
+#include "core/geometry/walkable_region.h"
+#include "core/support/errors.h"
 #include "tests/test_support.h"
 
 #include <doctest/doctest.h>

@@ -1,10 +1,10 @@
 // The CPU reference warp, blend and error against scenes with known answers.
 
-#include "core/blend.h"
-#include "core/color.h"
-#include "core/reconstruction_error.h"
-#include "core/view_synthesis.h"
-#include "core/warp.h"
+#include "core/image/color.h"
+#include "core/synthesis/blend.h"
+#include "core/synthesis/reconstruction_error.h"
+#include "core/synthesis/view_synthesis.h"
+#include "core/synthesis/warp.h"
 #include "tests/analytic_scene.h"
 
 #include <tbb/global_control.h>

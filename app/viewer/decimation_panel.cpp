@@ -4,7 +4,7 @@
 
 #include "app/viewer/panel_window.h"
 #include "app/viewer/viewer_state.h"
-#include "core/errors.h"
+#include "core/support/errors.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>

@@ -1,8 +1,8 @@
 #include "app/viewer/decimation_session.h"
 
-#include "core/color.h"
-#include "core/png_io.h"
-#include "core/progress.h"
+#include "core/image/color.h"
+#include "core/io/png_io.h"
+#include "core/support/progress.h"
 
 #include <algorithm>
 #include <chrono>

@@ -8,11 +8,11 @@
 // a thread of their own, so stepping through the log works at once while
 // they load; only the work that needs them waits.
 
-#include "core/dataset.h"
-#include "core/edge_collapse_decimator.h"
-#include "core/image.h"
-#include "core/selection.h"
-#include "core/triangle_error.h"
+#include "core/image/image.h"
+#include "core/io/dataset.h"
+#include "core/selection/edge_collapse_decimator.h"
+#include "core/selection/selection.h"
+#include "core/selection/triangle_error.h"
 
 #include <atomic>
 #include <condition_variable>

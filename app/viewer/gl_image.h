@@ -1,8 +1,8 @@
 #pragma once
 // An image on the GPU that ImGui can show.
 
-#include "core/image.h"
-#include "render/gl_objects.h"
+#include "core/image/image.h"
+#include "render/gl/gl_objects.h"
 
 #include <imgui.h>
 

@@ -4,7 +4,7 @@
 
 #include "app/viewer/panel_window.h"
 #include "app/viewer/viewer_state.h"
-#include "core/color.h"
+#include "core/image/color.h"
 
 #include <imgui.h>
 

@@ -1,12 +1,12 @@
 // `triwalk view`: open the walkthrough viewer.
 
-#include "app/commands.h"
-#include "app/option_checks.h"
-#include "app/quality_options.h"
+#include "app/commands/commands.h"
+#include "app/setup/option_checks.h"
+#include "app/setup/quality_options.h"
+#include "app/setup/walkthrough_setup.h"
 #include "app/viewer/viewer_app.h"
-#include "app/walkthrough_setup.h"
-#include "core/errors.h"
-#include "core/triangle_error.h"
+#include "core/selection/triangle_error.h"
+#include "core/support/errors.h"
 
 namespace triwalk {
 

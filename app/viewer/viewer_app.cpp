@@ -4,12 +4,12 @@
 
 #include "app/viewer/viewer_app.h"
 
+#include "app/setup/walkthrough_setup.h"
 #include "app/viewer/viewer_state.h"
-#include "app/walkthrough_setup.h"
-#include "core/png_io.h"
-#include "core/selection.h"
-#include "render/glfw_window_context.h"
-#include "render/walkthrough_renderer.h"
+#include "core/io/png_io.h"
+#include "core/selection/selection.h"
+#include "render/gl/glfw_window_context.h"
+#include "render/walkthrough/walkthrough_renderer.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

@@ -1,8 +1,8 @@
 #pragma once
 // `triwalk view`: the interactive walkthrough with its panels.
 
-#include "core/camera_path.h"
-#include "core/view_synthesis.h"
+#include "core/io/camera_path.h"
+#include "core/synthesis/view_synthesis.h"
 
 #include <filesystem>
 #include <string>

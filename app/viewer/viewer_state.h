@@ -5,9 +5,9 @@
 #include "app/viewer/decimation_session.h"
 #include "app/viewer/gl_image.h"
 #include "app/viewer/walk_controller.h"
-#include "core/view_mesh.h"
-#include "render/gpu_warper.h"
-#include "render/panorama_cache.h"
+#include "core/geometry/view_mesh.h"
+#include "render/walkthrough/gpu_warper.h"
+#include "render/walkthrough/panorama_cache.h"
 
 #include <array>
 #include <optional>

@@ -4,7 +4,7 @@
 // the view looks around. Input ImGui wants is left to ImGui. The person
 // stays inside the area the triangulation covers (sliding along its edge).
 
-#include "core/view_mesh.h"
+#include "core/geometry/view_mesh.h"
 
 #include <glm/glm.hpp>
 

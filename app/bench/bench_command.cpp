@@ -1,0 +1,65 @@
+// `triwalk bench`: every performance figure the project quotes comes from
+// here, printed with the machine and the data size.
+
+#include "app/bench/bench_groups.h"
+#include "app/commands/commands.h"
+#include "app/setup/option_checks.h"
+#include "core/support/errors.h"
+#include "render/gl/gl_context.h"
+#include "render/scene/scene_description.h"
+
+#include <cstdio>
+#include <set>
+
+namespace triwalk {
+
+void registerBenchCommand(CLI::App& app) {
+  struct Arguments {
+    std::vector<std::string> only;
+    std::string gl = "auto";
+    int captureViews = 20;
+    int decimationWidth = 256;
+    std::string dataset, selection;
+  };
+  auto arguments = std::make_shared<Arguments>();
+  CLI::App* command = app.add_subcommand("bench", "Measure throughput and print a table (machine, sizes, figures)");
+  command->add_option("--only", arguments->only, "Run only these groups: capture, decimate, warp, render, viewer")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"capture", "decimate", "warp", "render", "viewer"}));
+  command->add_option("--gl", arguments->gl, "Headless OpenGL: auto, egl or osmesa")->capture_default_str();
+  command->add_option("--capture-views", arguments->captureViews, "Panoramas rendered for the capture figure")
+      ->capture_default_str()->check(positiveNumber());
+  command->add_option("--decimation-width", arguments->decimationWidth, "Panorama width decimation works at")
+      ->capture_default_str()->check(CLI::IsMember({64, 128, 256, 512, 1024}));
+  command->add_option("--dataset", arguments->dataset,
+                      "Data set for the decimation figures (default: capture the default one first)");
+  command->add_option("--selection", arguments->selection, "Selection for the viewer figure (default: all samples)");
+  command->callback([arguments] {
+    const std::set<std::string> only(arguments->only.begin(), arguments->only.end());
+    auto selected = [&](const std::string& group) { return only.empty() || only.count(group) > 0; };
+    BenchTable table;
+    std::string glDescription;
+    auto context = createHeadlessContext(parseHeadlessBackend(arguments->gl));
+    glDescription = context->description();
+    if (selected("capture")) {
+      const BenchViews views = captureBenchViews();
+      benchCapture(table, views.scene, 1024, arguments->captureViews);
+    }
+    if (selected("decimate")) {
+      benchDecimate(table, loadSceneDescription(builtinScenePath()), arguments->dataset, arguments->decimationWidth);
+    }
+    if (selected("warp") || selected("render")) {
+      const BenchViews views = captureBenchViews();
+      if (selected("warp")) benchWarp(table, views, arguments->decimationWidth);
+      if (selected("render")) benchRender(table, views, 60);
+    }
+    if (selected("viewer")) {
+      if (arguments->dataset.empty()) throw InputError("--dataset", "the viewer figure walks through a data set: give --dataset");
+      const Dataset dataset = Dataset::open(arguments->dataset);
+      benchViewer(table, dataset, arguments->selection, 300);
+    }
+    table.print(glDescription);
+  });
+}
+
+}  // namespace triwalk

@@ -1,0 +1,71 @@
+#include "app/bench/bench_groups.h"
+#include "core/selection/reference_selection.h"
+#include "render/capture/dataset_capture.h"
+
+#include <sys/resource.h>
+
+#include <filesystem>
+
+namespace triwalk {
+
+namespace {
+
+double peakResidentGigabytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / (1024.0 * 1024.0);  // ru_maxrss is in KiB on Linux
+}
+
+}  // namespace
+
+void benchDecimate(BenchTable& table, const Scene& scene, const std::string& datasetDirectory, int errorWidth) {
+  std::filesystem::path directory = datasetDirectory;
+  const bool captured = directory.empty();
+  if (captured) {
+    directory = std::filesystem::temp_directory_path() / "triwalk-bench-dataset";
+    CaptureOptions options;  // the default capture: 30 paths x 15 samples at 1024x512
+    options.probes = 0;
+    options.quiet = true;
+    captureDataset(scene, "builtin", options, directory);
+  }
+  const Dataset dataset = Dataset::open(directory);
+  const std::string size = std::to_string(dataset.sampleCount()) + " samples " + std::to_string(dataset.manifest().width) +
+                           "x" + std::to_string(dataset.manifest().height) + ", errors at " + std::to_string(errorWidth) +
+                           "x" + std::to_string(errorWidth / 2);
+  TriangleErrorSettings settings;
+  settings.width = errorWidth;
+  const auto loadStart = BenchClock::now();
+  DatasetTriangleErrors errors(dataset, settings, true);
+  const double loadSeconds = secondsSince(loadStart);
+  // What `decimate --max-error 1.85` (the main job) runs: the default
+  // cost, boundary and area weights, then the refinement.
+  SelectionSettings selection;
+  selection.decimation.maxError = 1.85;
+  const SelectionRun run = selectReferences(dataset, errors, selection, true);
+  const DecimationStatistics& statistics = run.statistics;
+  const RefinementResult& refinement = run.refinement;
+  const std::string cost = collapseCostName(selection.decimation.cost);
+  table.add({"decimation wall time (edge collapse, " + cost + " cost, to the threshold 1.85)", size,
+             formatNumber(run.collapseSeconds, 1) + " s",
+             "initial edge costs " + formatNumber(run.costingSeconds, 1) + " s, " + std::to_string(run.collapses) +
+                 " collapses to " + std::to_string(run.initialSamples - int(run.collapses)) +
+                 " samples; loading the panoramas " + formatNumber(loadSeconds, 1) + " s more"});
+  table.add({"decimation peak memory (with refinement)", size, formatNumber(peakResidentGigabytes(), 2) + " GiB",
+             "process peak RSS (the capture before it needs far less): panoramas at the error width plus the "
+             "warped-layer cache (" + formatNumber(double(errors.layerCache().budgetBytes()) / double(1u << 30), 1) +
+                 " GiB budget)"});
+  table.add({"decimation errors computed vs served from the cache", size,
+             std::to_string(statistics.errorsComputed) + " computed, " + std::to_string(statistics.cacheHits) + " cached",
+             "errors of dense samples (" + cost + " cost); warped layers computed " +
+                 std::to_string(errors.layerCache().misses()) + ", reused " + std::to_string(errors.layerCache().hits()) +
+                 "; stale heap entries skipped " + std::to_string(statistics.staleEntriesSkipped)});
+  table.add({"refinement wall time (references moved at the final count)", size,
+             formatNumber(run.refinementSeconds, 1) + " s",
+             std::to_string(refinement.moves.size()) + " moves in " + std::to_string(refinement.passes) +
+                 " passes; dense-sample errors computed " + std::to_string(refinement.errorsComputed) + ", cached " +
+                 std::to_string(refinement.cacheHits) + "; mean error " + formatNumber(refinement.objectiveBefore, 4) +
+                 " -> " + formatNumber(refinement.objectiveAfter, 4)});
+  if (captured) std::filesystem::remove_all(directory);
+}
+
+}  // namespace triwalk

@@ -1,0 +1,40 @@
+#pragma once
+// The groups of `triwalk bench`, one file each; they share the built-in
+// scene captured once at the sizes they need.
+
+#include "app/bench/bench_table.h"
+#include "core/image/image.h"
+#include "core/io/dataset.h"
+#include "render/scene/scene.h"
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace triwalk {
+
+// Panoramas of the built-in scene around the middle of the walkable area,
+// rendered once with the current GL context.
+struct BenchViews {
+  Scene scene;
+  std::vector<glm::vec3> positions;  // sources, 0.35 m apart
+  std::vector<Panorama> panoramas;   // 1024x512, one per position
+  glm::vec3 destination{0.0f};       // inside the sources' triangle
+  Panorama destinationPanorama;
+};
+BenchViews captureBenchViews();
+
+void benchCapture(BenchTable& table, const Scene& scene, int width, int views);
+void benchWarp(BenchTable& table, const BenchViews& views, int decimationWidth);
+void benchRender(BenchTable& table, const BenchViews& views, int frames);
+// The viewer's frame loop along a walk (selection empty: the dense mesh).
+void benchViewer(BenchTable& table, const Dataset& dataset, const std::string& selection, int frames);
+// datasetDirectory empty: captures the default data set first.
+void benchDecimate(BenchTable& table, const Scene& scene, const std::string& datasetDirectory, int errorWidth);
+
+using BenchClock = std::chrono::steady_clock;
+inline double secondsSince(BenchClock::time_point start) {
+  return std::chrono::duration<double>(BenchClock::now() - start).count();
+}
+
+}  // namespace triwalk

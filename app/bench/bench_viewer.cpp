@@ -1,0 +1,53 @@
+#include "app/bench/bench_groups.h"
+#include "app/setup/walkthrough_setup.h"
+#include "core/io/camera_path.h"
+#include "render/walkthrough/walkthrough_renderer.h"
+
+#include <algorithm>
+#include <thread>
+
+namespace triwalk {
+
+// The viewer's frame loop without the window: walking along a line at
+// 1.2 m/s and 30 frames a second, panoramas from the working set that never
+// blocks (a reference still loading is drawn without).
+void benchViewer(BenchTable& table, const Dataset& dataset, const std::string& selection, int frames) {
+  const ViewMesh mesh = walkthroughMesh(dataset, selection);
+  PanoramaCache cache(dataset, WarpOptions{}, size_t(1) << 30);
+  WalkthroughRenderer renderer(mesh, cache, 1280, 720);
+  glm::dvec2 lower(1e30), upper(-1e30);
+  for (int v : mesh.vertices()) lower = glm::min(lower, mesh.position(v)), upper = glm::max(upper, mesh.position(v));
+  const float eye = sampleEyeHeight(dataset);
+  const float y = float(0.5 * (lower.y + upper.y));
+  const float length = std::min(float(upper.x - lower.x), 1.2f * float(frames) / 30.0f);
+  const std::vector<CameraPose> poses =
+      translatePath({float(lower.x) + 0.1f, y, eye}, {float(lower.x) + 0.1f + length, y, eye}, frames, 30.0f);
+
+  std::vector<double> milliseconds;
+  int incomplete = 0;
+  PinholeCamera camera;
+  for (const CameraPose& pose : poses) {
+    camera.position = pose.position;
+    camera.yawDegrees = pose.yawDegrees;
+    glFinish();
+    const auto start = BenchClock::now();
+    const WalkthroughRenderer::Frame frame = renderer.render(camera, GpuWarpSettings{}, false);
+    glFinish();
+    const double elapsed = secondsSince(start);
+    milliseconds.push_back(1000.0 * elapsed);
+    incomplete += frame.available < 3;
+    // The walk advances at 30 frames a second at most, as a display would.
+    if (elapsed < 1.0 / 30.0) std::this_thread::sleep_for(std::chrono::duration<double>(1.0 / 30.0 - elapsed));
+  }
+  const PanoramaCache::Statistics statistics = cache.statistics();
+  table.add({"viewer frame time walking, median / p95",
+             "1280x720, " + std::to_string(frames) + " frames over " + formatNumber(length, 1) + " m, " +
+                 std::to_string(mesh.vertexCount()) + " references of " + std::to_string(dataset.manifest().width) + "x" +
+                 std::to_string(dataset.manifest().height),
+             formatMedianAndP95(milliseconds),
+             "frames never wait for the disk: " + std::to_string(incomplete) + " of them drawn with a reference still loading "
+                 "(the first ones, and where the walk outran the loader); working set " + std::to_string(statistics.misses) +
+                 " misses, " + std::to_string(statistics.hits) + " hits"});
+}
+
+}  // namespace triwalk

@@ -1,0 +1,94 @@
+#include "app/bench/bench_groups.h"
+#include "core/image/panorama_resample.h"
+#include "core/synthesis/reconstruction_error.h"
+#include "core/synthesis/view_synthesis.h"
+
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <memory>
+#include <thread>
+
+namespace triwalk {
+
+namespace {
+
+struct WarpRun {
+  double seconds = 0.0;
+  WarpTimings timings;
+  uint64_t triangles = 0;
+};
+
+WarpRun timeWarps(const WarpSource& source, const DestinationCamera& destination, int repetitions) {
+  WarpRun run;
+  warpToCamera(source, destination, WarpMethod::Mesh);  // warm-up
+  const auto start = BenchClock::now();
+  for (int i = 0; i < repetitions; ++i) {
+    const WarpLayer layer = warpToCamera(source, destination, WarpMethod::Mesh);
+    run.timings.projectSeconds += layer.timings.projectSeconds / repetitions;
+    run.timings.rasterSeconds += layer.timings.rasterSeconds / repetitions;
+    run.timings.resolveSeconds += layer.timings.resolveSeconds / repetitions;
+    run.triangles = layer.trianglesRasterized;
+  }
+  run.seconds = secondsSince(start) / repetitions;
+  return run;
+}
+
+std::string split(const WarpRun& run) {
+  const double total = run.timings.projectSeconds + run.timings.rasterSeconds + run.timings.resolveSeconds;
+  return "project " + formatNumber(100.0 * run.timings.projectSeconds / total, 0) + "%, raster " +
+         formatNumber(100.0 * run.timings.rasterSeconds / total, 0) + "%, resolve " +
+         formatNumber(100.0 * run.timings.resolveSeconds / total, 0) + "%; " +
+         formatNumber(double(run.triangles) / run.timings.rasterSeconds / 1e6, 1) + " M triangles/s set up in raster";
+}
+
+}  // namespace
+
+void benchWarp(BenchTable& table, const BenchViews& views, int decimationWidth) {
+  const Panorama& panorama = views.panoramas[0];
+  const double megapixels = double(panorama.color.pixelCount()) / 1e6;
+  const auto prepareStart = BenchClock::now();
+  const WarpSource source(panorama, views.positions[0], 0.0f, WarpOptions{});
+  const double prepareSeconds = secondsSince(prepareStart);
+  const DestinationCamera destination = DestinationCamera::panorama(views.destination, 1024, 512);
+  const std::string size = "1024x512 -> 1024x512, builtin scene, " + std::to_string(source.keptTriangleCount()) +
+                           " triangles kept of " + std::to_string(source.triangleCount());
+
+  const WarpRun all = timeWarps(source, destination, 5);
+  table.add({"CPU warp, all threads (" + std::to_string(std::thread::hardware_concurrency()) + ")", size,
+             formatNumber(megapixels / all.seconds, 2) + " source Mpixel/s",
+             formatNumber(1000.0 * all.seconds, 1) + " ms per warp; " + split(all)});
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    const WarpRun one = timeWarps(source, destination, 3);
+    table.add({"CPU warp, 1 thread", size, formatNumber(megapixels / one.seconds, 2) + " source Mpixel/s",
+               formatNumber(1000.0 * one.seconds, 1) + " ms per warp; " + split(one) + "; source preparation " +
+                   formatNumber(1000.0 * prepareSeconds, 1) + " ms (all threads)"});
+  }
+
+  // Triangle errors as decimation computes them: three sources warped to
+  // the destination, blended and compared, many errors in parallel.
+  const int factor = panorama.width() / decimationWidth;
+  std::vector<std::unique_ptr<WarpSource>> small;
+  std::vector<const WarpSource*> pointers;
+  for (size_t i = 0; i < 3; ++i) {
+    small.push_back(std::make_unique<WarpSource>(downsamplePanorama(views.panoramas[i], factor), views.positions[i], 0.0f,
+                                                 WarpOptions{}));
+    pointers.push_back(small.back().get());
+  }
+  const ColorImage truth = toDisplayColors(downsamplePanorama(views.destinationPanorama, factor).color);
+  const DestinationCamera smallDestination = DestinationCamera::panorama(views.destination, decimationWidth, decimationWidth / 2);
+  const int errors = 64;
+  const auto errorStart = BenchClock::now();
+  tbb::parallel_for(0, errors, [&](int) {
+    const SynthesizedView view = synthesizeView(pointers, smallDestination, SynthesisOptions{});
+    reconstructionError(toDisplayColors(view.blended.color), view.blended.hole, truth, ErrorOptions{});
+  });
+  const double errorSeconds = secondsSince(errorStart);
+  table.add({"triangle errors (3 warps + blend + E), all threads",
+             std::to_string(decimationWidth) + "x" + std::to_string(decimationWidth / 2) + ", " + std::to_string(errors) +
+                 " errors",
+             formatNumber(errors / errorSeconds, 1) + " errors/s", "the unit of work of decimation"});
+}
+
+}  // namespace triwalk

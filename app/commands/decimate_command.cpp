@@ -1,0 +1,83 @@
+// `triwalk decimate`: edge-collapse decimation of the dense triangulation,
+// written as selection.json with its collapse log.
+
+#include "app/commands/commands.h"
+#include "app/setup/decimation_options.h"
+#include "app/setup/option_checks.h"
+#include "core/selection/reference_selection.h"
+#include "core/support/errors.h"
+#include "core/support/progress.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace triwalk {
+
+void registerDecimateCommand(CLI::App& app) {
+  struct Arguments {
+    std::string dataset, out;
+    double maxError = DecimationOptions{}.maxError;
+    int target = 0;
+    bool quiet = false;
+    SelectionArguments selection;
+    ErrorArguments errors;
+  };
+  auto arguments = std::make_shared<Arguments>();
+  CLI::App* command = app.add_subcommand("decimate", "Select reference samples by edge-collapse decimation");
+  command->add_option("--dataset", arguments->dataset, "Data set directory")->required();
+  command->add_option("--out", arguments->out, "Selection file to write (selection.json)")->required()->check(writableFile());
+  command->add_option("--max-error", arguments->maxError,
+                      "Stop before a collapse whose cost exceeds this (the paper's 1.85); 0 disables")
+      ->capture_default_str()->check(nonNegativeNumber());
+  command->add_option("--target", arguments->target, "Stop at this many samples; 0 disables")
+      ->capture_default_str()->check(nonNegativeNumber());
+  addSelectionOptions(*command, arguments->selection);
+  command->add_flag("--quiet", arguments->quiet, "No progress output");
+  addErrorOptions(*command, arguments->errors);
+
+  command->callback([arguments] {
+    const Arguments& a = *arguments;
+    if (a.maxError <= 0.0 && a.target == 0) throw InputError("decimate", "give --max-error, --target or both");
+    if (a.target == 1 || a.target == 2) throw InputError("--target", "a triangle needs at least 3 samples");
+    const Dataset dataset = Dataset::open(a.dataset);
+    if (a.target > dataset.sampleCount()) {
+      throw InputError("--target", std::to_string(a.target) + " is more than the " + std::to_string(dataset.sampleCount()) +
+                                       " samples of the data set");
+    }
+    const TriangleErrorSettings settings = triangleErrorSettings(a.errors, dataset);
+    std::printf("%s\n", describeErrorSettings(settings).c_str());
+
+    InterruptScope interruptScope;
+    DatasetTriangleErrors errors(dataset, settings, a.quiet);
+    const SelectionSettings selection = selectionSettings(a.selection, a.maxError, a.target);
+    SelectionRun run = selectReferences(dataset, errors, selection, a.quiet);
+
+    run.selection.settings = describeSelectionSettings(selection, settings);
+    writeSelection(a.out, run.selection, dataset);
+
+    const DecimationStatistics& statistics = run.statistics;
+    std::printf("kept %zu of %d samples, %zu triangles; stopped: %s", run.selection.samples.size(), run.initialSamples,
+                run.selection.triangles.size(), stopReasonName(run.stopReason));
+    if (std::isfinite(run.selection.nextCost)) {
+      std::printf(run.stopReason == StopReason::MaxError ? " (lowest error of a refused collapse %.3f)" : " (next cost %.3f)",
+                  run.selection.nextCost);
+    }
+    std::printf("\n%zu collapses in %.1f s (edge costing %.1f s); errors computed %llu, served from the cache %llu; "
+                "stale heap entries skipped %llu\n",
+                run.collapses, run.collapseSeconds, run.costingSeconds, (unsigned long long)statistics.errorsComputed,
+                (unsigned long long)statistics.cacheHits, (unsigned long long)statistics.staleEntriesSkipped);
+    const RefinementResult& refinement = run.refinement;
+    if (selection.refinement.radius > 0.0) {
+      std::printf("refinement: %zu references moved in %d passes (radius %.2f m); mean error over the dense samples %.4f "
+                  "-> %.4f; %.1f s, errors computed %llu, served from the cache %llu\n",
+                  refinement.moves.size(), refinement.passes, selection.refinement.radius, refinement.objectiveBefore,
+                  refinement.objectiveAfter, run.refinementSeconds, (unsigned long long)refinement.errorsComputed,
+                  (unsigned long long)refinement.cacheHits);
+    }
+    std::printf("warped layers computed %llu, reused %llu\n", (unsigned long long)errors.layerCache().misses(),
+                (unsigned long long)errors.layerCache().hits());
+    std::printf("wrote %s\n", a.out.c_str());
+  });
+}
+
+}  // namespace triwalk

@@ -1,0 +1,171 @@
+// `triwalk render`: headless walkthrough frames along a camera path, with
+// the GPU warp; --compare also renders the CPU reference of each frame.
+
+#include "app/commands/commands.h"
+#include "app/setup/option_checks.h"
+#include "app/setup/quality_options.h"
+#include "app/setup/walkthrough_setup.h"
+#include "core/image/color.h"
+#include "core/image/image_compare.h"
+#include "core/io/camera_path.h"
+#include "core/io/png_io.h"
+#include "core/support/errors.h"
+#include "core/support/progress.h"
+#include "core/synthesis/blend.h"
+#include "render/gl/gl_context.h"
+#include "render/walkthrough/walkthrough_renderer.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+
+namespace triwalk {
+
+namespace {
+
+// The CPU reference of a frame, in display bytes with the GPU's hole color.
+Rgb8Image cpuReference(const Dataset& dataset, const std::array<int, 3>& references, const PinholeCamera& camera,
+                       const SynthesisOptions& synthesis, glm::vec3 holeColor,
+                       std::map<int, std::unique_ptr<WarpSource>>& sources) {
+  std::vector<const WarpSource*> pointers;
+  for (int sample : references) {
+    auto& source = sources[sample];
+    if (!source) {
+      const ViewRecord& view = dataset.sample(sample);
+      source = std::make_unique<WarpSource>(dataset.loadView(view), view.position, degreesToRadians(view.yawDegrees),
+                                            synthesis.warp);
+    }
+    pointers.push_back(source.get());
+  }
+  const SynthesizedView view = synthesizeView(pointers, DestinationCamera::camera(camera), synthesis);
+  Rgb8Image image(camera.width, camera.height);
+  for (size_t i = 0; i < image.pixelCount(); ++i) {
+    image.pixels[i] = toBytes(view.blended.hole[i] ? holeColor : displayColor(view.blended.color.pixels[i]));
+  }
+  return image;
+}
+
+}  // namespace
+
+void registerRenderCommand(CLI::App& app) {
+  struct Arguments {
+    std::string dataset, selection, path = "rotate", out, size = "1280x720", holes = "mark", gl = "auto";
+    float fov = 60.0f, pitch = 0.0f;
+    std::vector<float> at, from, to, yaw;
+    int frames = 0;
+    bool compare = false, showSources = false;
+    size_t cacheMegabytes = 1024;
+    QualityArguments quality;
+  };
+  auto arguments = std::make_shared<Arguments>();
+  CLI::App* command = app.add_subcommand("render", "Render walkthrough frames headless (GPU warp) along a camera path");
+  command->add_option("--dataset", arguments->dataset, "Data set directory")->required();
+  command->add_option("--selection", arguments->selection, "Selection (from decimate); default: all samples");
+  command->add_option("--path", arguments->path,
+                      "Camera path file (x y z yaw pitch a line), or the preset rotate (turn at --at) or translate "
+                      "(--from to --to)")
+      ->capture_default_str();
+  command->add_option("--out", arguments->out, "Directory for frame_NNNN.png")->required()->check(writableDirectory());
+  command->add_option("--size", arguments->size, "Frame size WIDTHxHEIGHT")->capture_default_str();
+  command->add_option("--fov", arguments->fov, "Vertical field of view, degrees")
+      ->capture_default_str()->check(CLI::Range(10.0f, 150.0f));
+  command->add_option("--frames", arguments->frames, "Frames of a preset path (default: 36 rotate, 24 translate)");
+  command->add_option("--at", arguments->at, "rotate: position x,y[,z] (default: the middle of the samples)")
+      ->delimiter(',')->expected(2, 3);
+  command->add_option("--from", arguments->from, "translate: start x,y[,z]")->delimiter(',')->expected(2, 3);
+  command->add_option("--to", arguments->to, "translate: end x,y[,z]")->delimiter(',')->expected(2, 3);
+  command->add_option("--yaw", arguments->yaw, "translate: view yaw, degrees (default: sideways to the motion)")->expected(1);
+  command->add_option("--pitch", arguments->pitch, "Pitch of preset paths, degrees")->capture_default_str();
+  command->add_flag("--compare", arguments->compare,
+                    "Also write the CPU reference and a difference heatmap of each frame, and print PSNR");
+  command->add_option("--holes", arguments->holes, "Holes: mark (magenta) or black")
+      ->capture_default_str()->check(CLI::IsMember({"mark", "black"}));
+  command->add_flag("--show-sources", arguments->showSources, "Color each pixel by the references that made it");
+  command->add_option("--cache-mb", arguments->cacheMegabytes, "Memory for resident panoramas, MiB")->capture_default_str();
+  command->add_option("--gl", arguments->gl, "Headless OpenGL: auto, egl or osmesa")->capture_default_str();
+  addRenderQualityOptions(*command, arguments->quality);
+
+  command->callback([arguments] {
+    const Arguments& a = *arguments;
+    const Dataset dataset = Dataset::open(a.dataset);
+    ViewMesh mesh = walkthroughMesh(dataset, a.selection);
+    int width = 0, height = 0;
+    parseSize(a.size, "--size", width, height);
+    const SynthesisOptions synthesis = synthesisOptions(a.quality);
+
+    // Presets centre on the samples of the mesh at eye height.
+    glm::dvec2 lower(1e30), upper(-1e30);
+    for (int v : mesh.vertices()) lower = glm::min(lower, mesh.position(v)), upper = glm::max(upper, mesh.position(v));
+    const float eye = sampleEyeHeight(dataset);
+    auto point = [&](const std::vector<float>& v, glm::vec3 fallback) {
+      if (v.empty()) return fallback;
+      return glm::vec3(v[0], v[1], v.size() > 2 ? v[2] : eye);
+    };
+    const glm::vec3 middle(glm::vec2(0.5 * (lower + upper)), eye);
+    std::vector<CameraPose> poses;
+    if (a.path == "rotate") {
+      poses = rotatePath(point(a.at, middle), a.frames > 0 ? a.frames : 36, a.pitch);
+    } else if (a.path == "translate") {
+      const glm::vec3 from = point(a.from, glm::vec3(float(lower.x), middle.y, eye));
+      const glm::vec3 to = point(a.to, glm::vec3(float(upper.x), middle.y, eye));
+      const glm::vec3 motion = to - from;
+      const float sideways = glm::degrees(std::atan2(motion.y, motion.x)) + 90.0f;
+      poses = translatePath(from, to, a.frames > 0 ? a.frames : 24, a.yaw.empty() ? sideways : a.yaw[0], a.pitch);
+    } else {
+      poses = readCameraPath(a.path);
+    }
+
+    auto context = createHeadlessContext(parseHeadlessBackend(a.gl));
+    PanoramaCache cache(dataset, synthesis.warp, a.cacheMegabytes << 20);
+    WalkthroughRenderer renderer(std::move(mesh), cache, width, height);
+    GpuWarpSettings settings;
+    settings.blend = synthesis.blend;
+    settings.holeColor = a.holes == "mark" ? glm::vec3(1.0f, 0.0f, 1.0f) : glm::vec3(0.0f);
+    settings.showSources = a.showSources;
+    std::filesystem::create_directories(a.out);
+    std::map<int, std::unique_ptr<WarpSource>> cpuSources;
+    double psnrSum = 0.0, worstPsnr = INFINITY;
+    double frameMilliseconds = 0.0;
+    InterruptScope interruptScope;
+    ProgressReporter progress("render", poses.size());
+    for (size_t i = 0; i < poses.size(); ++i) {
+      throwIfInterrupted();
+      PinholeCamera camera;
+      camera.width = width;
+      camera.height = height;
+      camera.verticalFovDegrees = a.fov;
+      camera.position = poses[i].position;
+      camera.yawDegrees = poses[i].yawDegrees;
+      camera.pitchDegrees = poses[i].pitchDegrees;
+      const auto start = std::chrono::steady_clock::now();
+      const WalkthroughRenderer::Frame frame = renderer.render(camera, settings, true);
+      const Rgb8Image image = renderer.warper().readPixels();
+      frameMilliseconds += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      char name[64];
+      std::snprintf(name, sizeof name, "frame_%04zu", i);
+      const std::filesystem::path stem = std::filesystem::path(a.out) / name;
+      writePng(stem.string() + ".png", image);
+      if (a.compare) {
+        const Rgb8Image reference = cpuReference(dataset, frame.references, camera, synthesis, settings.holeColor, cpuSources);
+        if (cpuSources.size() > 9) cpuSources.clear();
+        writePng(stem.string() + "_cpu.png", reference);
+        writePng(stem.string() + "_diff.png", heatmapImage(differenceImage(image, reference), 0.25f));
+        const double value = psnr(image, reference);
+        psnrSum += value;
+        worstPsnr = std::min(worstPsnr, value);
+        progress.setStatus("PSNR " + std::to_string(int(value * 10) / 10.0).substr(0, 5) + " dB");
+      }
+      progress.advance();
+    }
+    progress.finish();
+    std::printf("rendered %zu frames %dx%d into %s, %.1f ms a frame with loading\n", poses.size(), width, height,
+                a.out.c_str(), frameMilliseconds / double(poses.size()));
+    if (a.compare) {
+      std::printf("GPU vs CPU reference: mean PSNR %.2f dB, worst %.2f dB\n", psnrSum / double(poses.size()), worstPsnr);
+    }
+  });
+}
+
+}  // namespace triwalk

@@ -1,0 +1,302 @@
+// `triwalk suite`: the selection measured on several scenes at several
+// sample counts. Each scene is captured once (if its data set is missing),
+// decimated on its own at each count (--target N, refinement included:
+// what a user gets), and compared at its held-out probes with the dense
+// triangulation and the baselines. One table: per scene and count, the
+// probe mean of every method, edge collapse's paired difference against
+// uniform and k-medoids with its standard error, and the fraction of the
+// uniform -> dense gap that edge collapse closes; then the means over
+// scenes.
+//
+// The spec file (JSON):
+// {
+//   "format": "triwalk-suite", "width": 512, "probes": 100,
+//   "fractions": [0.05, 0.1, 0.2],                 (of each scene's samples)
+//   "scenes": [ {"name": "builtin", "scene": "builtin"},
+//               {"name": "oacmpdm2", "scene": ".../z_oacmp-volume1-v3.pk3", "map": "oacmpdm2"}, ... ]
+// }
+
+#include "app/commands/commands.h"
+#include "app/setup/decimation_options.h"
+#include "app/setup/option_checks.h"
+#include "app/setup/scene_capture.h"
+#include "core/io/atomic_file.h"
+#include "core/io/json_fields.h"
+#include "core/selection/baselines.h"
+#include "core/selection/evaluation.h"
+#include "core/support/errors.h"
+#include "core/support/progress.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+namespace triwalk {
+
+namespace {
+
+struct SuiteScene {
+  std::string name;
+  SceneCaptureRequest capture;
+};
+
+struct SuiteSpec {
+  int width = 512;
+  int probes = 100;
+  std::vector<double> fractions;
+  std::vector<SuiteScene> scenes;
+};
+
+SuiteSpec readSuiteSpec(const std::filesystem::path& path) {
+  const nlohmann::json document = readJsonFile(path);
+  const JsonObject root(document, path.string());
+  if (root.stringOr("format", "") != "triwalk-suite") root.fail("not a triwalk suite (format field)");
+  SuiteSpec spec;
+  spec.width = root.integerOr("width", spec.width);
+  spec.probes = root.integerOr("probes", spec.probes);
+  if (spec.width < 16 || spec.width % 2 != 0) root.fail("width: must be an even number >= 16");
+  if (spec.probes < 2) root.fail("probes: a paired comparison needs at least 2 probes");
+  const nlohmann::json& fractions = root.array("fractions");
+  for (size_t i = 0; i < fractions.size(); ++i) {
+    if (!fractions[i].is_number() || !(fractions[i].get<double>() > 0.0 && fractions[i].get<double>() < 1.0)) {
+      root.fail("fractions[" + std::to_string(i) + "]: a fraction of the samples, between 0 and 1");
+    }
+    spec.fractions.push_back(fractions[i].get<double>());
+  }
+  if (spec.fractions.empty()) root.fail("fractions: give at least one");
+  const nlohmann::json& scenes = root.array("scenes");
+  std::set<std::string> names;
+  for (size_t i = 0; i < scenes.size(); ++i) {
+    const JsonObject entry = root.element("scenes", i);
+    SuiteScene scene;
+    scene.name = entry.string("name");
+    if (scene.name.empty() || scene.name.find_first_of("/\\") != std::string::npos || scene.name[0] == '.') {
+      entry.fail("name: a plain folder name");
+    }
+    if (!names.insert(scene.name).second) entry.fail("name: '" + scene.name + "' appears twice");
+    scene.capture.scene = entry.string("scene");
+    scene.capture.import.map = entry.stringOr("map", "");
+    if (entry.has("area")) scene.capture.options.area = entry.vec4("area");
+    scene.capture.options.width = spec.width;
+    scene.capture.options.probes = spec.probes;
+    spec.scenes.push_back(std::move(scene));
+  }
+  if (spec.scenes.empty()) root.fail("scenes: give at least one");
+  return spec;
+}
+
+double mean(const std::vector<double>& values) {
+  double sum = 0.0;
+  for (double v : values) sum += v;
+  return values.empty() ? 0.0 : sum / double(values.size());
+}
+
+// Edge collapse against one baseline at the probes: the paired difference
+// relative to the baseline's mean.
+struct Comparison {
+  double relative = 0.0, standardError = 0.0;
+};
+
+Comparison compare(const std::vector<double>& candidate, const std::vector<double>& baseline) {
+  const PairedComparison paired = compareProbeErrors(candidate, baseline);
+  const double baselineMean = mean(baseline);
+  return {paired.meanDifference / baselineMean, paired.standardError / baselineMean};
+}
+
+struct SuiteRow {
+  std::string scene;
+  double fraction = 0.0;
+  int count = 0;
+  int uniformCount = 0;
+  double dense = 0.0, uniform = 0.0, kmedoids = 0.0, random = 0.0, edgeCollapse = 0.0;
+  Comparison versusUniform, versusKMedoids;
+  double gapClosed = 0.0;  // (uniform - edge collapse) / (uniform - dense)
+  double selectionSeconds = 0.0;
+};
+
+std::string formatPercent(const Comparison& comparison) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%+.1f%% +- %.1f%%", 100.0 * comparison.relative, 100.0 * comparison.standardError);
+  return text;
+}
+
+std::string tableOf(const std::vector<SuiteRow>& rows, const std::vector<double>& fractions) {
+  std::ostringstream out;
+  char line[512];
+  out << "| scene | samples | dense | uniform | k-medoids | random | edge collapse | vs uniform | vs k-medoids | gap closed |\n"
+         "|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const SuiteRow& r : rows) {
+    std::snprintf(line, sizeof line, "| %s | %d | %.4f | %.4f (%d) | %.4f | %.4f | %.4f | %s | %s | %.0f%% |\n",
+                  r.scene.c_str(), r.count, r.dense, r.uniform, r.uniformCount, r.kmedoids, r.random, r.edgeCollapse,
+                  formatPercent(r.versusUniform).c_str(), formatPercent(r.versusKMedoids).c_str(), 100.0 * r.gapClosed);
+    out << line;
+  }
+  out << "\nMeans over scenes (the relative differences and the gap closed averaged; wins = rows where edge collapse "
+         "has the lower probe mean):\n\n"
+         "| fraction | vs uniform | vs k-medoids | gap closed | beats uniform | beats k-medoids |\n|---|---|---|---|---|---|\n";
+  auto summary = [&](const std::string& label, const std::vector<const SuiteRow*>& selected) {
+    double u = 0.0, k = 0.0, g = 0.0;
+    int winsU = 0, winsK = 0;
+    for (const SuiteRow* r : selected) {
+      u += r->versusUniform.relative / double(selected.size());
+      k += r->versusKMedoids.relative / double(selected.size());
+      g += r->gapClosed / double(selected.size());
+      winsU += r->edgeCollapse < r->uniform;
+      winsK += r->edgeCollapse < r->kmedoids;
+    }
+    std::snprintf(line, sizeof line, "| %s | %+.1f%% | %+.1f%% | %.0f%% | %d of %zu | %d of %zu |\n", label.c_str(), 100.0 * u,
+                  100.0 * k, 100.0 * g, winsU, selected.size(), winsK, selected.size());
+    out << line;
+  };
+  std::vector<const SuiteRow*> all;
+  for (double fraction : fractions) {
+    std::vector<const SuiteRow*> selected;
+    for (const SuiteRow& r : rows) {
+      if (r.fraction == fraction) selected.push_back(&r);
+    }
+    char label[32];
+    std::snprintf(label, sizeof label, "%.0f%%", 100.0 * fraction);
+    if (!selected.empty()) summary(label, selected);
+  }
+  for (const SuiteRow& r : rows) all.push_back(&r);
+  if (!all.empty()) summary("all", all);
+  return out.str();
+}
+
+}  // namespace
+
+void registerSuiteCommand(CLI::App& app) {
+  struct Arguments {
+    std::string spec, out;
+    std::vector<std::string> only;
+    bool reuseSelections = false;
+    bool quiet = false;
+    SelectionArguments selection;
+    ErrorArguments errors;
+  };
+  auto arguments = std::make_shared<Arguments>();
+  CLI::App* command =
+      app.add_subcommand("suite", "Measure the selection against the baselines on several scenes and sample counts");
+  command->add_option("--spec", arguments->spec, "Suite file (JSON: scenes, capture width, probes, count fractions)")
+      ->required();
+  command->add_option("--out", arguments->out, "Directory for the data sets, selections and the table")->required()->check(writableDirectory());
+  command->add_option("--only", arguments->only, "Run only these scenes (names from the spec)")->delimiter(',');
+  command->add_flag("--reuse-selections", arguments->reuseSelections,
+                    "Evaluate selections already in --out instead of decimating again");
+  command->add_flag("--quiet", arguments->quiet, "No progress output from the steps");
+  addSelectionOptions(*command, arguments->selection);
+  addErrorOptions(*command, arguments->errors);
+
+  command->callback([arguments] {
+    const Arguments& a = *arguments;
+    const SuiteSpec spec = readSuiteSpec(a.spec);
+    for (const std::string& name : a.only) {
+      if (std::none_of(spec.scenes.begin(), spec.scenes.end(), [&](const SuiteScene& s) { return s.name == name; })) {
+        throw InputError("--only", "no scene '" + name + "' in " + a.spec);
+      }
+    }
+    const std::filesystem::path out = a.out;
+    std::error_code error;
+    std::filesystem::create_directories(out, error);
+    if (error) throw InputError(a.out, "cannot create the directory: " + error.message());
+    std::printf("suite %s: %zu scenes\n", a.spec.c_str(), spec.scenes.size());
+
+    InterruptScope interruptScope;
+    std::vector<SuiteRow> rows;
+    nlohmann::json results = nlohmann::json::array();
+    const size_t steps = spec.scenes.size() * spec.fractions.size();
+    ProgressReporter progress("suite", steps, false);
+    for (const SuiteScene& scene : spec.scenes) {
+      if (!a.only.empty() && std::find(a.only.begin(), a.only.end(), scene.name) == a.only.end()) {
+        progress.advance(spec.fractions.size());
+        continue;
+      }
+      const std::filesystem::path directory = out / scene.name;
+      const std::filesystem::path datasetDirectory = directory / "dataset";
+      if (!std::filesystem::exists(datasetDirectory / kManifestFileName)) {
+        std::printf("== %s: capture\n", scene.name.c_str());
+        SceneCaptureRequest capture = scene.capture;
+        capture.out = datasetDirectory.string();
+        capture.options.quiet = a.quiet;
+        captureScene(capture);
+      }
+      const Dataset dataset = Dataset::open(datasetDirectory);
+      if (dataset.probeCount() < 2) throw InputError(dataset.manifestPath().string(), "the suite needs probes");
+      const TriangleErrorSettings settings = triangleErrorSettings(a.errors, dataset);
+      std::printf("== %s: %s\n", scene.name.c_str(), describeErrorSettings(settings).c_str());
+      DatasetTriangleErrors errors(dataset, settings, a.quiet);
+      const std::vector<glm::dvec2> positions = samplePositions(dataset);
+      const std::vector<double> dense = probeErrors(ViewMesh::delaunay(positions, {}, dataset.manifestPath().string()), errors);
+
+      for (double fraction : spec.fractions) {
+        throwIfInterrupted();
+        const int count = std::max(4, int(std::lround(fraction * dataset.sampleCount())));
+        const std::filesystem::path selectionFile = directory / ("selection_" + std::to_string(count) + ".json");
+        std::printf("== %s: %d of %d samples\n", scene.name.c_str(), count, dataset.sampleCount());
+        std::fflush(stdout);
+        SuiteRow row;
+        row.scene = scene.name;
+        row.fraction = fraction;
+        row.count = count;
+        Selection selection;
+        if (a.reuseSelections && std::filesystem::exists(selectionFile)) {
+          selection = readSelection(selectionFile, dataset);
+        } else {
+          const SelectionSettings selectionOptions = selectionSettings(a.selection, 0.0, count);
+          SelectionRun run = selectReferences(dataset, errors, selectionOptions, a.quiet);
+          run.selection.settings = describeSelectionSettings(selectionOptions, settings);
+          writeSelection(selectionFile, run.selection, dataset);
+          selection = std::move(run.selection);
+          row.selectionSeconds = run.collapseSeconds + run.refinementSeconds;
+        }
+        const ViewMesh uniform = ViewMesh::delaunay(positions, uniformSelection(dataset, count), "uniform baseline");
+        row.uniformCount = uniform.vertexCount();
+        const std::vector<double> edgeCollapse = probeErrors(selectionMesh(selection, dataset), errors);
+        const std::vector<double> uniformErrors = probeErrors(uniform, errors);
+        const std::vector<double> kmedoids =
+            probeErrors(ViewMesh::delaunay(positions, kMedoidsSelection(positions, count), "k-medoids baseline"), errors);
+        const std::vector<double> random =
+            probeErrors(ViewMesh::delaunay(positions, randomSelection(dataset.sampleCount(), count, 1), "random baseline"),
+                        errors);
+        row.dense = mean(dense);
+        row.uniform = mean(uniformErrors);
+        row.kmedoids = mean(kmedoids);
+        row.random = mean(random);
+        row.edgeCollapse = mean(edgeCollapse);
+        row.versusUniform = compare(edgeCollapse, uniformErrors);
+        row.versusKMedoids = compare(edgeCollapse, kmedoids);
+        row.gapClosed = (row.uniform - row.edgeCollapse) / (row.uniform - row.dense);
+        std::printf("   edge collapse %.4f, uniform %.4f (%d), k-medoids %.4f: %s against uniform, %s against k-medoids, "
+                    "%.0f%% of the gap closed\n",
+                    row.edgeCollapse, row.uniform, row.uniformCount, row.kmedoids, formatPercent(row.versusUniform).c_str(),
+                    formatPercent(row.versusKMedoids).c_str(), 100.0 * row.gapClosed);
+        std::fflush(stdout);
+        results.push_back({{"scene", scene.name},
+                           {"settings", describeSelectionSettings(selectionSettings(a.selection, 0.0, count), settings)},
+                           {"fraction", fraction},
+                           {"samples", count},
+                           {"uniform_samples", row.uniformCount},
+                           {"selection", selectionFile.filename().string()},
+                           {"selection_seconds", row.selectionSeconds},
+                           {"probe_errors",
+                            {{"dense", dense},
+                             {"uniform", uniformErrors},
+                             {"edge_collapse", edgeCollapse},
+                             {"kmedoids", kmedoids},
+                             {"random", random}}}});
+        rows.push_back(row);
+        progress.advance();
+      }
+    }
+    progress.finish();
+    const std::string table = tableOf(rows, spec.fractions);
+    std::printf("\n%s", table.c_str());
+    writeJsonFile(out / "suite.json", {{"spec", a.spec}, {"rows", results}});
+    writeTextFileAtomically(out / "suite.md", table);
+    std::printf("wrote %s and %s\n", (out / "suite.md").c_str(), (out / "suite.json").c_str());
+  });
+}
+
+}  // namespace triwalk

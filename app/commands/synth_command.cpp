@@ -1,0 +1,167 @@
+// `triwalk synth`: reconstruct a view from chosen references with the CPU
+// reference warp and, where ground truth exists, measure R, B, E.
+
+#include "app/commands/commands.h"
+#include "app/setup/option_checks.h"
+#include "app/setup/quality_options.h"
+#include "app/setup/view_ids.h"
+#include "core/image/color.h"
+#include "core/io/dataset.h"
+#include "core/io/png_io.h"
+#include "core/support/errors.h"
+#include "core/support/progress.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <numeric>
+
+namespace triwalk {
+
+namespace {
+
+struct Reconstruction {
+  SynthesizedView view;
+  ReconstructionError error;
+  ScalarImage perPixel;
+};
+
+Reconstruction reconstruct(const Dataset& dataset, const std::vector<int>& references, glm::vec3 at, int width,
+                           const Panorama* truth, const SynthesisOptions& synthesis, const ErrorOptions& errorOptions) {
+  std::vector<std::unique_ptr<WarpSource>> sources;
+  std::vector<const WarpSource*> pointers;
+  for (int index : references) {
+    const ViewRecord& record = dataset.sample(index);
+    const Panorama panorama = dataset.loadView(record, width);
+    sources.push_back(std::make_unique<WarpSource>(panorama, record.position, degreesToRadians(record.yawDegrees),
+                                                   synthesis.warp));
+    pointers.push_back(sources.back().get());
+  }
+  const int destinationWidth = sources.front()->width();
+  Reconstruction result;
+  result.view = synthesizeView(pointers, DestinationCamera::panorama(at, destinationWidth, destinationWidth / 2),
+                               synthesis);
+  if (truth) {
+    result.error = reconstructionError(toDisplayColors(result.view.blended.color), result.view.blended.hole,
+                                       toDisplayColors(truth->color), errorOptions, &result.perPixel);
+  }
+  return result;
+}
+
+// Sample indices ordered by distance to a point in x, y (ties by index).
+std::vector<int> nearestSamples(const Dataset& dataset, glm::vec3 point, int count) {
+  std::vector<int> order(size_t(dataset.sampleCount()));
+  std::iota(order.begin(), order.end(), 0);
+  auto distance = [&](int i) { return glm::length(glm::vec2(dataset.sample(i).position) - glm::vec2(point)); };
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return distance(a) < distance(b); });
+  order.resize(size_t(std::min(count, dataset.sampleCount())));
+  return order;
+}
+
+const ViewRecord* viewAt(const Dataset& dataset, glm::vec3 point) {
+  for (const auto* views : {&dataset.manifest().samples, &dataset.manifest().probes}) {
+    for (const ViewRecord& view : *views) {
+      if (glm::length(view.position - point) < 1e-3f) return &view;
+    }
+  }
+  return nullptr;
+}
+
+void probeStudy(const Dataset& dataset, int width, const SynthesisOptions& synthesis, const ErrorOptions& errorOptions) {
+  if (dataset.probeCount() == 0) throw InputError(dataset.manifestPath().string(), "the data set has no probes");
+  std::printf("| probe | position | E, 1 nearest | E, 3 nearest | R1 | R3 | B1 %% | B3 %% |\n|---|---|---|---|---|---|---|---|\n");
+  double sum1 = 0.0, sum3 = 0.0;
+  int better = 0;
+  ProgressReporter progress("probes", size_t(dataset.probeCount()));
+  for (int p = 0; p < dataset.probeCount(); ++p) {
+    throwIfInterrupted();
+    const ViewRecord& probe = dataset.probe(p);
+    const Panorama truth = dataset.loadView(probe, width);
+    const Reconstruction one =
+        reconstruct(dataset, nearestSamples(dataset, probe.position, 1), probe.position, width, &truth, synthesis, errorOptions);
+    const Reconstruction three =
+        reconstruct(dataset, nearestSamples(dataset, probe.position, 3), probe.position, width, &truth, synthesis, errorOptions);
+    std::printf("| p%d | (%.2f, %.2f) | %.3f | %.3f | %.4f | %.4f | %.2f | %.2f |\n", probe.id, probe.position.x,
+                probe.position.y, one.error.total, three.error.total, one.error.rms, three.error.rms,
+                one.error.badPercent, three.error.badPercent);
+    sum1 += one.error.total;
+    sum3 += three.error.total;
+    better += three.error.total < one.error.total;
+    progress.advance();
+  }
+  progress.finish();
+  std::printf("\nmean E: 1 nearest %.3f, 3 nearest %.3f; 3 nearest lower at %d of %d probes\n",
+              sum1 / dataset.probeCount(), sum3 / dataset.probeCount(), better, dataset.probeCount());
+}
+
+}  // namespace
+
+void registerSynthCommand(CLI::App& app) {
+  struct Arguments {
+    std::string dataset, out, truth;
+    std::vector<std::string> references;
+    std::vector<float> at;
+    int width = 0;
+    bool allProbes = false;
+    QualityArguments quality;
+  };
+  auto arguments = std::make_shared<Arguments>();
+  CLI::App* command = app.add_subcommand("synth", "Reconstruct a view from reference samples with the CPU warp");
+  command->add_option("--dataset", arguments->dataset, "Data set directory")->required();
+  command->add_option("--refs", arguments->references, "Reference sample ids, e.g. 12,13,27")->delimiter(',');
+  command->add_option("--at", arguments->at, "Destination position x,y,z in metres")->delimiter(',')->expected(3);
+  command->add_option("--truth", arguments->truth, "Ground truth view (sample id or pN); default: a view at --at");
+  command->add_option("--out", arguments->out, "Directory for reconstruction, truth and heatmap PNGs")->check(writableDirectory());
+  command->add_option("--width", arguments->width, "Work at this panorama width (divides the data set's); 0 = full")
+      ->capture_default_str();
+  command->add_flag("--all-probes", arguments->allProbes,
+                    "For every probe: E from the 1 and the 3 nearest samples, as a table");
+  addQualityOptions(*command, arguments->quality);
+
+  command->callback([arguments] {
+    const Arguments& a = *arguments;
+    const Dataset dataset = Dataset::open(a.dataset);
+    const SynthesisOptions synthesis = synthesisOptions(a.quality);
+    const ErrorOptions errors = errorOptions(a.quality);
+    dataset.downsamplingFactor(a.width, "--width");
+    std::printf("%s\n", describeQuality(synthesis, errors).c_str());
+    InterruptScope interruptScope;
+    if (a.allProbes) {
+      probeStudy(dataset, a.width, synthesis, errors);
+      return;
+    }
+    if (a.references.empty() || a.at.empty()) throw InputError("synth", "give --refs and --at, or --all-probes");
+    if (a.references.size() > 8) throw InputError("--refs", "at most 8 references");
+    std::vector<int> references;
+    for (const std::string& name : a.references) references.push_back(findSampleIndex(dataset, name, "--refs"));
+    const glm::vec3 at(a.at[0], a.at[1], a.at[2]);
+    const ViewRecord* truthView = a.truth.empty() ? viewAt(dataset, at) : &findView(dataset, a.truth, "--truth");
+    std::unique_ptr<Panorama> truth;
+    if (truthView) truth = std::make_unique<Panorama>(dataset.loadView(*truthView, a.width));
+
+    const Reconstruction result = reconstruct(dataset, references, at, a.width, truth.get(), synthesis, errors);
+    const BlendedView& blended = result.view.blended;
+    const size_t holes = size_t(std::count(blended.hole.begin(), blended.hole.end(), uint8_t(1)));
+    std::printf("reconstructed %dx%d at (%.3f, %.3f, %.3f) from %zu references; holes %.3f%% of pixels\n",
+                blended.color.width, blended.color.height, at.x, at.y, at.z, references.size(),
+                100.0 * double(holes) / double(blended.hole.size()));
+    if (!a.out.empty()) {
+      std::filesystem::create_directories(a.out);
+      writePng(std::filesystem::path(a.out) / "reconstruction.png", toDisplayImage(blended.color));
+    }
+    if (!truth) {
+      std::printf("no ground truth at this position (give --truth to compare)\n");
+      return;
+    }
+    std::printf("truth %s: R %.5f  B %.3f%%  E %.4f\n", truthView->file.c_str(), result.error.rms,
+                result.error.badPercent, result.error.total);
+    if (!a.out.empty()) {
+      writePng(std::filesystem::path(a.out) / "truth.png", toDisplayImage(truth->color));
+      writePng(std::filesystem::path(a.out) / "heatmap.png", heatmapImage(result.perPixel, 0.25f));
+      std::printf("wrote reconstruction.png, truth.png, heatmap.png (per-pixel RMS difference, red = 0.25) to %s\n",
+                  a.out.c_str());
+    }
+  });
+}
+
+}  // namespace triwalk

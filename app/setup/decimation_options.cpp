@@ -1,0 +1,81 @@
+#include "app/setup/decimation_options.h"
+
+#include "app/setup/option_checks.h"
+
+namespace triwalk {
+
+void addErrorOptions(CLI::App& command, ErrorArguments& arguments) {
+  command.add_option("--error-width", arguments.width,
+                     "Panorama width errors are computed at (divides the data set's width; default: the largest such "
+                     "width not above " + std::to_string(kDefaultErrorWidth) + ")")
+      ->check(nonNegativeNumber());
+  command.add_option("--triangle-destinations", arguments.destinations,
+                     "Where a triangle's error is measured: centroid (the paper's), quadrature (centroid and the "
+                     "three sub-triangle centroids) or interior (up to 8 samples inside it)")
+      ->capture_default_str()->check(CLI::IsMember({"centroid", "quadrature", "interior"}));
+  addQualityOptions(command, arguments.quality);
+}
+
+TriangleErrorSettings triangleErrorSettings(const ErrorArguments& arguments, const Dataset& dataset) {
+  TriangleErrorSettings settings;
+  settings.width = errorWidthFor(dataset, arguments.width);
+  settings.destinations = parseTriangleDestinations(arguments.destinations);
+  settings.synthesis = synthesisOptions(arguments.quality);
+  settings.error = errorOptions(arguments.quality);
+  return settings;
+}
+
+std::string describeErrorSettings(const TriangleErrorSettings& settings) {
+  return "errors at " + std::to_string(settings.width) + "x" + std::to_string(settings.width / 2) + ", " +
+         (settings.destinations == TriangleDestinations::Centroid     ? "centroid"
+          : settings.destinations == TriangleDestinations::Quadrature ? "quadrature"
+                                                                       : "interior") +
+         " destinations; " +
+         describeQuality(settings.synthesis, settings.error);
+}
+
+void addSelectionOptions(CLI::App& command, SelectionArguments& arguments) {
+  command.add_option("--cost", arguments.cost,
+                     "What ranks collapses: served-samples (the increase of the error over the dense samples the "
+                     "changed triangles serve) or centroid (the paper's: the mean error of the new triangles, each "
+                     "at the sample nearest its centroid)")
+      ->capture_default_str()->check(CLI::IsMember({"served-samples", "centroid"}));
+  command.add_flag("--fixed-boundary", arguments.fixedBoundary,
+                   "With --cost served-samples: keep the paper's rule that the covered region never shrinks "
+                   "(default: the boundary may move inward; samples left outside are served by the nearest triangle)");
+  command.add_flag("--one-ring", arguments.oneRing, "Also try every free sample inside the two one-rings as the placement");
+  command.add_flag("--unweighted-cost", arguments.unweightedCost,
+                   "With --cost centroid: the paper's plain mean of the new triangles' errors (default: area-weighted)");
+  command.add_option("--refine-radius", arguments.refineRadius,
+                     "After decimation, move references up to this far (metres) at a time while that lowers the "
+                     "mean error over the dense samples; 0 disables")
+      ->capture_default_str()->check(nonNegativeNumber());
+}
+
+SelectionSettings selectionSettings(const SelectionArguments& arguments, double maxError, int targetSamples) {
+  SelectionSettings settings;
+  DecimationOptions& options = settings.decimation;
+  options.maxError = maxError;
+  options.targetSamples = targetSamples;
+  options.oneRingCandidates = arguments.oneRing;
+  options.cost = parseCollapseCost(arguments.cost);
+  options.fixedBoundary = arguments.fixedBoundary || options.cost == CollapseCost::Centroid;
+  options.areaWeightedCost = !arguments.unweightedCost;
+  settings.refinement.radius = arguments.refineRadius;
+  return settings;
+}
+
+nlohmann::json describeSelectionSettings(const SelectionSettings& settings, const TriangleErrorSettings& errors) {
+  const DecimationOptions& options = settings.decimation;
+  return {{"max_error", options.maxError},
+          {"target", options.targetSamples},
+          {"one_ring", options.oneRingCandidates},
+          {"cost", collapseCostName(options.cost)},
+          {"fixed_boundary", options.fixedBoundary},
+          {"area_weighted_cost", options.areaWeightedCost},
+          {"refine_radius", settings.refinement.radius},
+          {"error_width", errors.width},
+          {"quality", describeErrorSettings(errors)}};
+}
+
+}  // namespace triwalk

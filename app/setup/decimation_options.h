@@ -1,0 +1,39 @@
+#pragma once
+// Options shared by decimate, eval and suite: the resolution errors are
+// computed at, the warp, blend and error options, and (decimate, suite)
+// how references are selected.
+
+#include "app/setup/quality_options.h"
+#include "core/selection/reference_selection.h"
+#include "core/selection/triangle_error.h"
+
+#include <CLI/CLI.hpp>
+
+namespace triwalk {
+
+struct ErrorArguments {
+  int width = 0;  // 0: the largest width not above kDefaultErrorWidth that divides the data set's
+  std::string destinations = "centroid";
+  QualityArguments quality;
+};
+
+void addErrorOptions(CLI::App& command, ErrorArguments& arguments);
+
+// How references are selected, apart from the stopping rule (threshold
+// and target), which decimate and suite set their own way.
+struct SelectionArguments {
+  bool oneRing = false;
+  std::string cost = "served-samples";
+  bool fixedBoundary = false;
+  bool unweightedCost = false;
+  double refineRadius = RefinementOptions{}.radius;
+};
+
+void addSelectionOptions(CLI::App& command, SelectionArguments& arguments);
+SelectionSettings selectionSettings(const SelectionArguments& arguments, double maxError, int targetSamples);
+// For selection.json: the settings that made it.
+nlohmann::json describeSelectionSettings(const SelectionSettings& settings, const TriangleErrorSettings& errors);
+TriangleErrorSettings triangleErrorSettings(const ErrorArguments& arguments, const Dataset& dataset);
+std::string describeErrorSettings(const TriangleErrorSettings& settings);
+
+}  // namespace triwalk

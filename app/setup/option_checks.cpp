@@ -1,0 +1,96 @@
+#include "app/setup/option_checks.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <optional>
+
+namespace triwalk {
+
+namespace {
+
+std::optional<double> numberIn(const std::string& text) {
+  // strtod, not from_chars: it reads "nan" and "inf" in any case, as CLI11 does.
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size()) return std::nullopt;
+  return value;
+}
+
+bool isWritableDirectory(const std::filesystem::path& path) {
+  std::error_code error;
+  return std::filesystem::is_directory(path, error) && ::access(path.c_str(), W_OK | X_OK) == 0;
+}
+
+std::filesystem::path folderOf(const std::filesystem::path& path) {
+  const std::filesystem::path parent = path.parent_path();
+  return parent.empty() ? std::filesystem::path(".") : parent;
+}
+
+void visit(CLI::App& app, const CLI::Validator& finite) {
+  for (CLI::Option* option : app.get_options()) {
+    if (option->get_type_name().find("FLOAT") != std::string::npos) option->check(finite);
+  }
+  for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) visit(*command, finite);
+}
+
+}  // namespace
+
+CLI::Validator nonNegativeNumber() {
+  return CLI::Validator(
+      [](std::string& text) {
+        const std::optional<double> value = numberIn(text);
+        return value && *value < 0.0 ? "must not be negative, got " + text : std::string();
+      },
+      "NONNEGATIVE");
+}
+
+CLI::Validator positiveNumber() {
+  return CLI::Validator(
+      [](std::string& text) {
+        const std::optional<double> value = numberIn(text);
+        return value && !(*value > 0.0) ? "must be positive, got " + text : std::string();
+      },
+      "POSITIVE");
+}
+
+CLI::Validator writableFile() {
+  return CLI::Validator(
+      [](std::string& text) {
+        const std::filesystem::path path(text);
+        std::error_code error;
+        if (text.empty()) return std::string("empty file name");
+        if (std::filesystem::is_directory(path, error)) return text + " is a folder, not a file";
+        if (!isWritableDirectory(folderOf(path))) return "cannot write " + text + ": no writable folder " + folderOf(path).string();
+        return std::string();
+      },
+      "FILE");
+}
+
+CLI::Validator writableDirectory() {
+  return CLI::Validator(
+      [](std::string& text) {
+        if (text.empty()) return std::string("empty folder name");
+        std::filesystem::path existing = std::filesystem::absolute(text).lexically_normal();
+        std::error_code error;
+        while (!std::filesystem::exists(existing, error) && existing.has_relative_path()) existing = existing.parent_path();
+        if (!std::filesystem::is_directory(existing, error)) return "cannot create folder " + text + ": " + existing.string() + " is not a folder";
+        if (!isWritableDirectory(existing)) return "cannot write in " + existing.string();
+        return std::string();
+      },
+      "DIR");
+}
+
+void hardenCommandLine(CLI::App& app) {
+  const CLI::Validator finite(
+      [](std::string& text) {
+        const std::optional<double> value = numberIn(text);
+        return value && !std::isfinite(*value) ? "must be a finite number, got " + text : std::string();
+      },
+      "");
+  visit(app, finite);
+  app.failure_message([](const CLI::App*, const CLI::Error& error) { return "triwalk: error: " + std::string(error.what()) + " (see --help)\n"; });
+}
+
+}  // namespace triwalk

@@ -1,0 +1,87 @@
+#include "app/setup/quality_options.h"
+
+#include "app/setup/option_checks.h"
+
+#include <cstdio>
+
+namespace triwalk {
+
+namespace {
+
+void addStretchOptions(CLI::App& command, QualityArguments& arguments) {
+  command.add_option("--stretch-test", arguments.stretchTest, "Rubber-sheet test: grazing-angle, depth-ratio or none")
+      ->capture_default_str()->group("Warp");
+  command.add_option("--grazing-angle", arguments.grazingAngleDegrees,
+                     "grazing-angle: drop triangles seen at less than this angle, degrees")
+      ->capture_default_str()->check(CLI::Range(0.0f, 89.0f))->group("Warp");
+  command.add_option("--depth-ratio", arguments.maxDepthRatio, "depth-ratio: drop triangles with farthest/nearest above this")
+      ->capture_default_str()->check(CLI::Range(1.0f, 1000.0f))->group("Warp");
+}
+
+void addBlendOptions(CLI::App& command, QualityArguments& arguments) {
+  command.add_option("--epsilon", arguments.epsilon, "Blend interval, relative to the nearest distance (Eq. 1)")
+      ->capture_default_str()->check(CLI::Range(0.0f, 10.0f))->group("Blend");
+  command.add_option("--min-weight-distance", arguments.minimumWeightDistance, "r_min of the weights 1/max(d, r_min), metres")
+      ->capture_default_str()->check(positiveNumber())->group("Blend");
+}
+
+}  // namespace
+
+void addRenderQualityOptions(CLI::App& command, QualityArguments& arguments) {
+  addStretchOptions(command, arguments);
+  addBlendOptions(command, arguments);
+}
+
+void addQualityOptions(CLI::App& command, QualityArguments& arguments) {
+  addStretchOptions(command, arguments);
+  command.add_flag("--point-warp", arguments.pointWarp, "The paper's literal point warp instead of the triangle mesh")
+      ->group("Warp");
+  addBlendOptions(command, arguments);
+  command.add_option("--alpha", arguments.alpha, "Weight of R in E = alpha R + beta B")->capture_default_str()->group("Error");
+  command.add_option("--beta", arguments.beta, "Weight of B (percent of bad pixels)")->capture_default_str()->group("Error");
+  command.add_option("--delta", arguments.delta, "Bad-pixel tolerance on the 0..255 scale")
+      ->capture_default_str()->check(nonNegativeNumber())->group("Error");
+  command.add_option("--pixel-weighting", arguments.pixelWeighting, "solid-angle (panoramas) or uniform (the paper's)")
+      ->capture_default_str()->check(CLI::IsMember({"solid-angle", "uniform"}))->group("Error");
+}
+
+SynthesisOptions synthesisOptions(const QualityArguments& arguments) {
+  SynthesisOptions options;
+  options.warp.method = arguments.pointWarp ? WarpMethod::Point : WarpMethod::Mesh;
+  options.warp.stretchTest = parseStretchTest(arguments.stretchTest);
+  options.warp.grazingAngleDegrees = arguments.grazingAngleDegrees;
+  options.warp.maxDepthRatio = arguments.maxDepthRatio;
+  options.blend.epsilon = arguments.epsilon;
+  options.blend.minimumWeightDistance = arguments.minimumWeightDistance;
+  return options;
+}
+
+ErrorOptions errorOptions(const QualityArguments& arguments) {
+  ErrorOptions options;
+  options.alpha = arguments.alpha;
+  options.beta = arguments.beta;
+  options.delta = arguments.delta;
+  options.weighting = parsePixelWeighting(arguments.pixelWeighting);
+  return options;
+}
+
+std::string describeQuality(const SynthesisOptions& synthesis, const ErrorOptions& error) {
+  char text[320];
+  const WarpOptions& warp = synthesis.warp;
+  char stretch[64];
+  if (warp.stretchTest == StretchTest::GrazingAngle) {
+    std::snprintf(stretch, sizeof stretch, "grazing-angle %.1f deg", warp.grazingAngleDegrees);
+  } else if (warp.stretchTest == StretchTest::DepthRatio) {
+    std::snprintf(stretch, sizeof stretch, "depth-ratio %.2f", warp.maxDepthRatio);
+  } else {
+    std::snprintf(stretch, sizeof stretch, "no stretch test");
+  }
+  std::snprintf(text, sizeof text,
+                "warp %s (%s); blend epsilon %.3f, r_min %.2f m; error E = %g R + %g B, delta %g/255, %s pixel weighting",
+                warp.method == WarpMethod::Mesh ? "mesh" : "point", stretch, synthesis.blend.epsilon,
+                synthesis.blend.minimumWeightDistance, error.alpha, error.beta, error.delta,
+                pixelWeightingName(error.weighting));
+  return text;
+}
+
+}  // namespace triwalk

@@ -1,0 +1,38 @@
+#pragma once
+// The warp, blend and error options shared by synth, decimate, eval and
+// render, registered once so every command names them the same way.
+
+#include "core/synthesis/reconstruction_error.h"
+#include "core/synthesis/view_synthesis.h"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace triwalk {
+
+struct QualityArguments {
+  std::string stretchTest = "grazing-angle";
+  float grazingAngleDegrees = WarpOptions{}.grazingAngleDegrees;
+  float maxDepthRatio = WarpOptions{}.maxDepthRatio;
+  bool pointWarp = false;
+  float epsilon = BlendOptions{}.epsilon;
+  float minimumWeightDistance = BlendOptions{}.minimumWeightDistance;
+  double alpha = ErrorOptions{}.alpha;
+  double beta = ErrorOptions{}.beta;
+  double delta = ErrorOptions{}.delta;
+  std::string pixelWeighting = "solid-angle";
+};
+
+// Warp, blend and error options (synth, decimate, eval).
+void addQualityOptions(CLI::App& command, QualityArguments& arguments);
+// The stretch test and the blend only (render, view: the GPU warp).
+void addRenderQualityOptions(CLI::App& command, QualityArguments& arguments);
+
+SynthesisOptions synthesisOptions(const QualityArguments& arguments);
+ErrorOptions errorOptions(const QualityArguments& arguments);
+
+// One line for reports: every choice that changes the numbers.
+std::string describeQuality(const SynthesisOptions& synthesis, const ErrorOptions& error);
+
+}  // namespace triwalk

@@ -1,0 +1,45 @@
+#include "app/setup/scene_loading.h"
+
+#include "app/setup/option_checks.h"
+#include "core/support/errors.h"
+#include "render/scene/scene_description.h"
+
+#include <cstdio>
+#include <filesystem>
+
+namespace triwalk {
+
+void addSceneImportOptions(CLI::App& command, SceneImportArguments& arguments) {
+  command.add_option("--unit-scale", arguments.unitScale,
+                     "Metres per unit of an imported scene (0: automatic, 0.0254 for Quake 3, else 1)")
+      ->capture_default_str()->check(nonNegativeNumber())->group("Import");
+  command.add_option("--up-axis", arguments.upAxis, "Up axis of an imported scene: auto, x, y or z")
+      ->capture_default_str()->check(CLI::IsMember({"auto", "x", "y", "z"}))->group("Import");
+  command.add_option("--map", arguments.map, "Quake 3 archive (.pk3): the map to read, e.g. oacmpdm3 (default: the first)")
+      ->group("Import");
+}
+
+LoadedScene loadSceneForCapture(const std::string& spec, const SceneImportArguments& arguments) {
+  if (spec == "builtin") return {"builtin", loadSceneDescription(builtinScenePath()), false};
+  const std::filesystem::path path(spec);
+  if (!std::filesystem::exists(path)) throw InputError(spec, "scene file does not exist");
+  if (path.extension() == ".json") return {path.stem().string(), loadSceneDescription(path), false};
+  ImportOptions options;
+  options.unitScale = arguments.unitScale;
+  options.upAxis = arguments.upAxis;
+  options.map = arguments.map;
+  ImportReport report;
+  LoadedScene loaded{"", importScene(path, options, report), true};
+  loaded.name = loaded.scene.name;
+  std::printf("imported %s: %zu triangles, %zu materials, %d textures", spec.c_str(), loaded.scene.triangleCount(),
+              loaded.scene.materials.size(), report.texturesLoaded);
+  if (!report.map.empty()) std::printf(", map %s, %zu spawn points", report.map.c_str(), report.spawnPoints.size());
+  std::printf("\n");
+  if (!report.missingTextures.empty()) {
+    std::fprintf(stderr, "triwalk: warning: %zu textures not found (drawn in a neutral color), e.g. %s\n",
+                 report.missingTextures.size(), report.missingTextures.front().c_str());
+  }
+  return loaded;
+}
+
+}  // namespace triwalk

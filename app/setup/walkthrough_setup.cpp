@@ -1,0 +1,30 @@
+#include "app/setup/walkthrough_setup.h"
+
+#include "core/selection/selection.h"
+#include "core/support/errors.h"
+
+#include <cstdio>
+
+namespace triwalk {
+
+ViewMesh walkthroughMesh(const Dataset& dataset, const std::string& selectionPath) {
+  if (selectionPath.empty()) return ViewMesh::delaunay(samplePositions(dataset), {}, dataset.manifestPath().string());
+  return selectionMesh(readSelection(selectionPath, dataset), dataset);
+}
+
+float sampleEyeHeight(const Dataset& dataset) {
+  double sum = 0.0;
+  for (int i = 0; i < dataset.sampleCount(); ++i) sum += dataset.sample(i).position.z;
+  return float(sum / dataset.sampleCount());
+}
+
+void parseSize(const std::string& text, const std::string& option, int& width, int& height) {
+  char x = 0;
+  int consumed = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%n", &width, &x, &height, &consumed) != 3 || x != 'x' ||
+      consumed != int(text.size()) || width < 16 || height < 16 || width > 8192 || height > 8192) {
+    throw InputError(option, "expected WIDTHxHEIGHT between 16 and 8192, got '" + text + "'");
+  }
+}
+
+}  // namespace triwalk

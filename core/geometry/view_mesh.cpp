@@ -1,0 +1,137 @@
+#include "core/geometry/view_mesh.h"
+
+#include "core/support/errors.h"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+
+namespace triwalk {
+
+ViewMesh::ViewMesh(std::vector<glm::dvec2> positions, std::vector<Triangle> triangles)
+    : positions_(std::move(positions)), triangles_(std::move(triangles)) {
+  trianglesOfSample_.resize(positions_.size());
+  std::map<std::pair<int, int>, std::pair<int, int>> edges;  // directed edge -> (triangle, edge index)
+  neighbours_.assign(triangles_.size(), {-1, -1, -1});
+  for (size_t t = 0; t < triangles_.size(); ++t) {
+    for (int e = 0; e < 3; ++e) {
+      const int a = triangles_[t][size_t(e)], b = triangles_[t][size_t((e + 1) % 3)];
+      TRIWALK_CHECK(a >= 0 && size_t(a) < positions_.size(), "triangle vertex out of range");
+      trianglesOfSample_[size_t(a)].push_back(int(t));
+      const auto twin = edges.find({b, a});
+      if (twin != edges.end()) {
+        neighbours_[t][size_t(e)] = twin->second.first;
+        neighbours_[size_t(twin->second.first)][size_t(twin->second.second)] = int(t);
+      }
+      edges[{a, b}] = {int(t), e};
+    }
+  }
+  for (size_t s = 0; s < trianglesOfSample_.size(); ++s) {
+    if (!trianglesOfSample_[s].empty()) vertices_.push_back(int(s));
+  }
+}
+
+ViewMesh ViewMesh::delaunay(std::vector<glm::dvec2> positions, std::span<const int> samples, const std::string& subject) {
+  const size_t chosen = samples.empty() ? positions.size() : samples.size();
+  if (chosen < 3) throw InputError(subject, "at least 3 samples are needed to triangulate, got " + std::to_string(chosen));
+  std::optional<ViewMesh> mesh = tryDelaunay(std::move(positions), samples);
+  if (!mesh) throw InputError(subject, "the sample positions are collinear: they do not span an area to triangulate");
+  return std::move(*mesh);
+}
+
+std::optional<ViewMesh> ViewMesh::tryDelaunay(std::vector<glm::dvec2> positions, std::span<const int> samples) {
+  std::vector<int> chosen(samples.begin(), samples.end());
+  if (chosen.empty()) {
+    for (size_t i = 0; i < positions.size(); ++i) chosen.push_back(int(i));
+  }
+  if (chosen.size() < 3) return std::nullopt;
+  std::vector<glm::dvec2> subset;
+  for (int sample : chosen) subset.push_back(positions[size_t(sample)]);
+  std::vector<Triangle> triangles = delaunayTriangles(subset);
+  if (triangles.empty()) return std::nullopt;
+  for (Triangle& triangle : triangles) {
+    for (int& vertex : triangle) vertex = chosen[size_t(vertex)];
+    triangle = canonicalTriangle(triangle);
+  }
+  std::sort(triangles.begin(), triangles.end());
+  return ViewMesh(std::move(positions), std::move(triangles));
+}
+
+glm::dvec2 ViewMesh::centroid(int triangle) const {
+  const Triangle& t = triangles_[size_t(triangle)];
+  return (position(t[0]) + position(t[1]) + position(t[2])) / 3.0;
+}
+
+bool ViewMesh::isBoundaryVertex(int sample) const {
+  for (int t : trianglesOfSample_[size_t(sample)]) {
+    for (int e = 0; e < 3; ++e) {
+      const Triangle& triangle = triangles_[size_t(t)];
+      if (neighbours_[size_t(t)][size_t(e)] < 0 && (triangle[size_t(e)] == sample || triangle[size_t((e + 1) % 3)] == sample)) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+std::vector<std::pair<int, int>> ViewMesh::boundaryEdges() const {
+  std::vector<std::pair<int, int>> edges;
+  for (size_t t = 0; t < triangles_.size(); ++t) {
+    for (int e = 0; e < 3; ++e) {
+      if (neighbours_[t][size_t(e)] < 0) edges.emplace_back(triangles_[t][size_t(e)], triangles_[t][size_t((e + 1) % 3)]);
+    }
+  }
+  return edges;
+}
+
+std::vector<int> ViewMesh::trianglesAround(int sample) const {
+  if (sample < 0 || size_t(sample) >= trianglesOfSample_.size()) return {};
+  return trianglesOfSample_[size_t(sample)];
+}
+
+bool ViewMesh::contains(int triangle, glm::dvec2 point) const {
+  const Triangle& t = triangles_[size_t(triangle)];
+  for (int e = 0; e < 3; ++e) {
+    if (orientation(position(t[size_t(e)]), position(t[size_t((e + 1) % 3)]), point) < 0) return false;
+  }
+  return true;
+}
+
+double ViewMesh::distanceToTriangle(int triangle, glm::dvec2 point) const {
+  return triwalk::distanceToTriangle(positions_, triangles_[size_t(triangle)], point);
+}
+
+int ViewMesh::locate(glm::dvec2 point, int hint) const {
+  if (triangles_.empty()) return -1;
+  int current = hint >= 0 && hint < triangleCount() ? hint : 0;
+  // Visibility walk: step across an edge that separates the triangle from
+  // the point. Trying the edges from a rotating start keeps the walk from
+  // cycling in meshes that are not Delaunay.
+  const int maximumSteps = 4 * triangleCount() + 16;
+  for (int step = 0; step < maximumSteps; ++step) {
+    const Triangle& t = triangles_[size_t(current)];
+    int next = -2;
+    for (int k = 0; k < 3; ++k) {
+      const int e = (k + step) % 3;
+      if (orientation(position(t[size_t(e)]), position(t[size_t((e + 1) % 3)]), point) < 0) {
+        next = neighbours_[size_t(current)][size_t(e)];
+        break;
+      }
+    }
+    if (next == -2) return current;  // inside or on the boundary of current
+    if (next == -1) break;           // the point is outside the covered area
+    current = next;
+  }
+  for (int t = 0; t < triangleCount(); ++t) {
+    if (contains(t, point)) return t;
+  }
+  int nearest = 0;
+  double nearestDistance = std::numeric_limits<double>::max();
+  for (int t = 0; t < triangleCount(); ++t) {
+    const double d = distanceToTriangle(t, point);
+    if (d < nearestDistance) nearestDistance = d, nearest = t;
+  }
+  return nearest;
+}
+
+}  // namespace triwalk

@@ -1,0 +1,63 @@
+#pragma once
+// A triangulation of sample positions in the walkthrough plane (x, y):
+// the Delaunay triangulation of the dense capture, a decimated mesh, or a
+// baseline's selection. Vertices are sample indices of the data set.
+// Holds adjacency and the boundary, and locates the triangle around a
+// point by walking from a hint (the viewer's last triangle).
+
+#include "core/geometry/planar_geometry.h"
+
+#include <glm/glm.hpp>
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace triwalk {
+
+class ViewMesh {
+public:
+  ViewMesh() = default;
+  // positions: (x, y) of every sample of the data set by index;
+  // triangles: counter-clockwise sample indices.
+  ViewMesh(std::vector<glm::dvec2> positions, std::vector<Triangle> triangles);
+
+  // The Delaunay triangulation of the given samples (all when empty).
+  // Throws InputError naming subject if they are collinear or fewer than 3.
+  static ViewMesh delaunay(std::vector<glm::dvec2> positions, std::span<const int> samples, const std::string& subject);
+  // The same, or nothing when the samples are fewer than 3 or collinear.
+  static std::optional<ViewMesh> tryDelaunay(std::vector<glm::dvec2> positions, std::span<const int> samples);
+
+  const std::vector<Triangle>& triangles() const { return triangles_; }
+  const std::vector<int>& vertices() const { return vertices_; }  // sorted sample indices
+  const std::vector<glm::dvec2>& positions() const { return positions_; }
+  int triangleCount() const { return int(triangles_.size()); }
+  int vertexCount() const { return int(vertices_.size()); }
+  glm::dvec2 position(int sample) const { return positions_[size_t(sample)]; }
+  glm::dvec2 centroid(int triangle) const;
+
+  // Triangle across edge (t[edge], t[edge + 1 mod 3]), -1 on the boundary.
+  int neighbour(int triangle, int edge) const { return neighbours_[size_t(triangle)][size_t(edge)]; }
+  bool isBoundaryVertex(int sample) const;
+  // Boundary edges, oriented with the mesh on their left.
+  std::vector<std::pair<int, int>> boundaryEdges() const;
+  // Triangles that use a sample, in index order.
+  std::vector<int> trianglesAround(int sample) const;
+
+  bool contains(int triangle, glm::dvec2 point) const;
+  // The triangle containing point, walking from hint (any triangle or -1).
+  // Outside the covered area: the nearest triangle. -1 only if empty.
+  int locate(glm::dvec2 point, int hint = -1) const;
+  // Distance from point to a triangle (0 inside).
+  double distanceToTriangle(int triangle, glm::dvec2 point) const;
+
+private:
+  std::vector<glm::dvec2> positions_;
+  std::vector<Triangle> triangles_;
+  std::vector<std::array<int, 3>> neighbours_;
+  std::vector<int> vertices_;
+  std::vector<std::vector<int>> trianglesOfSample_;
+};
+
+}  // namespace triwalk

@@ -1,0 +1,101 @@
+#pragma once
+// The captured data set: manifest.json plus one OpenEXR per view.
+//
+// manifest.json (format version 1):
+// {
+//   "format": "triwalk-dataset", "version": 1,
+//   "scene": "builtin", "projection": "equirectangular", "units": "metres",
+//   "width": 1024, "height": 512,
+//   "capture": { "paths": 30, "per_path": 15, ... }            (optional, informative)
+//   "samples": [ {"id": 0, "file": "samples/s0000.exr", "position": [x, y, z],
+//                 "yaw_degrees": 0, "path": 0, "step": 0}, ... ],
+//   "probes":  [ {"id": 0, "file": "probes/p0000.exr", "position": [x, y, z],
+//                 "yaw_degrees": 0}, ... ],
+//   "walkable": {"polygons": [...]}                               (optional, core/geometry/walkable_region.h)
+// }
+// Samples are the dense reference candidates; "path"/"step" place a sample
+// on the capture's grid of parallel paths (-1 when unknown). Probes are
+// held-out views, never references.
+
+#include "core/geometry/projection.h"
+#include "core/geometry/walkable_region.h"
+#include "core/image/image.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace triwalk {
+
+constexpr int kDatasetFormatVersion = 1;
+constexpr const char* kManifestFileName = "manifest.json";
+
+struct ViewRecord {
+  int id = 0;
+  std::string file;          // relative to the data set directory
+  glm::vec3 position{0.0f};  // metres
+  float yawDegrees = 0.0f;
+  int path = -1;  // index of the capture path, -1 when unknown
+  int step = -1;  // index along the path, -1 when unknown
+};
+
+struct Manifest {
+  std::string scene;
+  int width = 0;
+  int height = 0;
+  nlohmann::json capture = nlohmann::json::object();  // capture settings, informative
+  std::vector<ViewRecord> samples;
+  std::vector<ViewRecord> probes;
+  WalkableRegion walkable;  // empty when the manifest does not give one
+};
+
+class Dataset {
+public:
+  // Reads manifest.json and validates it (version, sizes, ids, positions,
+  // every referenced file exists). Throws InputError naming the file.
+  static Dataset open(const std::filesystem::path& directory);
+
+  const Manifest& manifest() const { return manifest_; }
+  const std::filesystem::path& directory() const { return directory_; }
+  std::filesystem::path manifestPath() const { return directory_ / kManifestFileName; }
+  int sampleCount() const { return int(manifest_.samples.size()); }
+  int probeCount() const { return int(manifest_.probes.size()); }
+  const ViewRecord& sample(int index) const { return manifest_.samples.at(size_t(index)); }
+  const ViewRecord& probe(int index) const { return manifest_.probes.at(size_t(index)); }
+
+  // Index of the sample with this id, or -1.
+  int sampleIndexOfId(int id) const;
+  int probeIndexOfId(int id) const;
+
+  // Loads one view's panorama, validating its size against the manifest
+  // and its values (see readPanoramaExr). A width below the data set's
+  // downsamples by an integer factor (see downsamplePanorama); 0 = full.
+  Panorama loadView(const ViewRecord& view, int width = 0) const;
+
+  // Throws InputError (naming option) unless width is 0 or divides the
+  // data set's width by an integer factor.
+  int downsamplingFactor(int width, const std::string& option) const;
+  // The largest width not above `limit` that downsamplingFactor accepts
+  // (the full width if it is not above the limit).
+  int largestWidthAtMost(int limit) const;
+
+  EquirectProjection projection(const ViewRecord& view) const;
+
+  // The walkthrough space: the manifest's walkable region, else the
+  // capture's rectangle, else the bounding box of the samples.
+  WalkableRegion walkableRegion() const;
+
+private:
+  std::filesystem::path directory_;
+  Manifest manifest_;
+};
+
+// Validates a manifest (also used before writing one).
+void validateManifest(const Manifest& manifest, const std::string& subject);
+
+// Writes manifest.json atomically into directory.
+void writeManifest(const std::filesystem::path& directory, const Manifest& manifest);
+
+}  // namespace triwalk

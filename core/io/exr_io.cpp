@@ -1,0 +1,144 @@
+#include "core/io/exr_io.h"
+
+#include "core/io/atomic_file.h"
+#include "core/support/errors.h"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <ImfThreading.h>
+#include <half.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace triwalk {
+
+namespace {
+
+constexpr const char* kColorChannels[3] = {"R", "G", "B"};
+constexpr const char* kDistanceChannel = "Z";
+
+}  // namespace
+
+Panorama readPanoramaExr(const std::filesystem::path& path, std::optional<glm::ivec2> expectedSize) {
+  const std::string name = path.string();
+  if (!std::filesystem::exists(path)) throw InputError(name, "file does not exist");
+  try {
+    Imf::InputFile file(name.c_str());
+    const Imf::Header& header = file.header();
+    const Imath::Box2i window = header.dataWindow();
+    // In 64 bits: a hostile data window overflows int.
+    const int64_t windowWidth = int64_t(window.max.x) - int64_t(window.min.x) + 1;
+    const int64_t windowHeight = int64_t(window.max.y) - int64_t(window.min.y) + 1;
+    if (windowWidth <= 0 || windowHeight <= 0) throw InputError(name, "empty image");
+    const std::string size = std::to_string(windowWidth) + "x" + std::to_string(windowHeight);
+    if (windowWidth > kMaxPanoramaWidth || windowHeight > kMaxPanoramaWidth / 2) {
+      throw InputError(name, "size " + size + " is larger than triwalk reads (" + std::to_string(kMaxPanoramaWidth) + "x" +
+                                 std::to_string(kMaxPanoramaWidth / 2) + ")");
+    }
+    const int width = int(windowWidth), height = int(windowHeight);
+    if (expectedSize && (width != expectedSize->x || height != expectedSize->y)) {
+      throw InputError(name, "size " + size + " but the manifest says " + std::to_string(expectedSize->x) + "x" +
+                                 std::to_string(expectedSize->y));
+    }
+
+    for (const char* channel : kColorChannels) {
+      if (!header.channels().findChannel(channel)) {
+        throw InputError(name, std::string("missing channel ") + channel);
+      }
+    }
+    if (!header.channels().findChannel(kDistanceChannel)) throw InputError(name, "missing channel Z (distance)");
+
+    const size_t pixelCount = size_t(width) * size_t(height);
+    std::vector<half> channels[3];
+    std::vector<float> distance(pixelCount);
+    Imf::FrameBuffer frameBuffer;
+    for (int c = 0; c < 3; ++c) {
+      channels[c].resize(pixelCount);
+      frameBuffer.insert(kColorChannels[c], Imf::Slice::Make(Imf::HALF, channels[c].data(), window));
+    }
+    frameBuffer.insert(kDistanceChannel, Imf::Slice::Make(Imf::FLOAT, distance.data(), window));
+    file.setFrameBuffer(frameBuffer);
+    file.readPixels(window.min.y, window.max.y);
+
+    Panorama panorama{ColorImage(width, height), ScalarImage(width, height)};
+    for (size_t i = 0; i < pixelCount; ++i) {
+      const glm::vec3 color{float(channels[0][i]), float(channels[1][i]), float(channels[2][i])};
+      if (!std::isfinite(color.r) || !std::isfinite(color.g) || !std::isfinite(color.b)) {
+        throw InputError(name, "non-finite color at pixel " + std::to_string(i % size_t(width)) + "," +
+                                   std::to_string(i / size_t(width)));
+      }
+      const float d = distance[i];
+      if (std::isnan(d)) {
+        throw InputError(name, "NaN distance at pixel " + std::to_string(i % size_t(width)) + "," +
+                                   std::to_string(i / size_t(width)));
+      }
+      if (d < 0.0f) {
+        throw InputError(name, "negative distance at pixel " + std::to_string(i % size_t(width)) + "," +
+                                   std::to_string(i / size_t(width)));
+      }
+      panorama.color.pixels[i] = color;
+      panorama.distance.pixels[i] = d;
+    }
+    return panorama;
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& error) {
+    throw InputError(name, std::string("cannot read OpenEXR: ") + error.what());
+  }
+}
+
+void writePanoramaExr(const std::filesystem::path& path, const Panorama& panorama) {
+  const int width = panorama.width();
+  const int height = panorama.height();
+  TRIWALK_CHECK(panorama.distance.width == width && panorama.distance.height == height,
+                "color and distance sizes differ");
+  const size_t pixelCount = size_t(width) * size_t(height);
+  // Refuse what the reader would reject (a shading bug upstream, or a colour
+  // beyond half's range) instead of leaving an unreadable view behind.
+  for (size_t i = 0; i < pixelCount; ++i) {
+    const glm::vec3& color = panorama.color.pixels[i];
+    const bool representable = std::isfinite(color.r) && std::isfinite(color.g) && std::isfinite(color.b) &&
+                               std::abs(color.r) <= HALF_MAX && std::abs(color.g) <= HALF_MAX &&
+                               std::abs(color.b) <= HALF_MAX;
+    if (!representable) {
+      throw InputError(path.string(), "not written: non-finite or out-of-range color at pixel " +
+                                          std::to_string(i % size_t(width)) + "," + std::to_string(i / size_t(width)));
+    }
+  }
+  std::vector<half> channels[3];
+  for (int c = 0; c < 3; ++c) {
+    channels[c].resize(pixelCount);
+    for (size_t i = 0; i < pixelCount; ++i) channels[c][i] = half(panorama.color.pixels[i][c]);
+  }
+
+  writeFileAtomically(path, [&](const std::filesystem::path& temporary) {
+    try {
+      Imf::Header header(width, height);
+      header.compression() = Imf::ZIP_COMPRESSION;
+      for (const char* channel : kColorChannels) header.channels().insert(channel, Imf::Channel(Imf::HALF));
+      header.channels().insert(kDistanceChannel, Imf::Channel(Imf::FLOAT));
+      Imf::FrameBuffer frameBuffer;
+      for (int c = 0; c < 3; ++c) {
+        frameBuffer.insert(kColorChannels[c],
+                           Imf::Slice(Imf::HALF, reinterpret_cast<char*>(channels[c].data()), sizeof(half),
+                                      sizeof(half) * size_t(width)));
+      }
+      frameBuffer.insert(kDistanceChannel,
+                         Imf::Slice(Imf::FLOAT,
+                                    reinterpret_cast<char*>(const_cast<float*>(panorama.distance.pixels.data())),
+                                    sizeof(float), sizeof(float) * size_t(width)));
+      Imf::OutputFile file(temporary.string().c_str(), header);
+      file.setFrameBuffer(frameBuffer);
+      file.writePixels(height);
+    } catch (const std::exception& error) {
+      throw InputError(path.string(), std::string("cannot write OpenEXR: ") + error.what());
+    }
+  });
+}
+
+}  // namespace triwalk

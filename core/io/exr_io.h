@@ -1,0 +1,28 @@
+#pragma once
+// OpenEXR I/O of one RGB-D panorama: channels R, G, B (half, linear) and
+// Z (float, Euclidean distance in metres, +inf = no surface). OpenEXR's
+// exceptions stop here and come out as InputError naming the file.
+
+#include "core/image/image.h"
+
+#include <glm/glm.hpp>
+
+#include <filesystem>
+#include <optional>
+
+namespace triwalk {
+
+// The largest panorama triwalk reads (32768 x 16384): a header is checked
+// against it, and against the expected size, before any pixel memory is
+// allocated, so a 1 KB file cannot claim gigabytes (found by fuzzing).
+inline constexpr int kMaxPanoramaWidth = 32768;
+
+// Reads and validates: the size (at most kMaxPanoramaWidth x half, and
+// expectedSize if given), all four channels present, finite non-negative
+// color, distance neither NaN nor negative.
+Panorama readPanoramaExr(const std::filesystem::path& path, std::optional<glm::ivec2> expectedSize = std::nullopt);
+
+// Writes atomically (temporary file + rename).
+void writePanoramaExr(const std::filesystem::path& path, const Panorama& panorama);
+
+}  // namespace triwalk

@@ -1,0 +1,264 @@
+#pragma once
+// Edge-collapse decimation of a triangulated set of views: the paper's
+// Sec. III-C with the definitions of docs/DESIGN.md ("Selection"), shaped
+// like meshoptimizer's simplifier (small steps over flat arrays) with
+// libigl's lazy-deletion heap.
+//
+//   cost every edge (v1, v2): for each placement p among v1, v2 and the
+//     free dense sample nearest the midpoint (optionally every free sample
+//     inside the two one-rings) whose collapse (v1, v2) -> p is valid,
+//     the cost of the mesh after it; the edge's cost is the lowest, its
+//     placement that p
+//   repeat:
+//     pop the cheapest edge (skip entries whose stamp is stale), re-check
+//     its cost (a far sample may have been freed or taken), collapse it,
+//     log it, and re-cost every edge whose updated triangles changed:
+//     those touching p or a neighbour of p
+//   until the target sample count, or no valid collapse is left under
+//   the error threshold.
+//
+// Two costs (CollapseCost):
+//   served samples (default): every dense sample that is not a reference
+//     is served by the triangle around it, as a walker standing there
+//     would be; a collapse costs the increase of the total reconstruction
+//     error over the samples its new triangles serve (those freed by it
+//     included). Greedy on this cost removes, at each step, the reference
+//     whose loss the walkthrough feels least, measured where it is felt.
+//     The threshold applies to the mean error of those samples.
+//   centroid (the paper's): the mean error of the updated triangles, each
+//     measured at one destination near its centroid, weighted by area
+//     unless asked otherwise; the threshold applies to that mean.
+//
+// A collapse is valid only if the result is a manifold planar
+// triangulation covering the same region:
+//   - link condition: v1 and v2 share exactly the neighbours opposite their edge;
+//   - two boundary vertices may only collapse along a boundary edge;
+//   - every new triangle is counter-clockwise (exact predicate, never flat);
+//   - the boundary never moves: a boundary vertex may be removed only where
+//     it lies on the straight segment between its boundary neighbours, and p
+//     must lie on that segment (hull corners stay).
+// Errors are cached (triangles by sorted vertex triple, served samples by
+// triangle and sample). Results do not depend on the thread count: only
+// the error batches run in parallel.
+
+#include "core/geometry/planar_geometry.h"
+#include "core/geometry/view_mesh.h"
+#include "core/selection/triangle_error.h"
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <map>
+#include <optional>
+#include <queue>
+#include <set>
+#include <unordered_map>
+#include <vector>
+
+namespace triwalk {
+
+class ProgressReporter;
+
+// Relocation is not a collapse: the refinement after decimation
+// (core/selection/selection_refinement.h) moved sample `first` to `placement`; the
+// sample count stays and `second` is -1.
+enum class PlacementKind { First, Second, Midpoint, OneRing, Relocation };
+const char* placementName(PlacementKind kind);
+
+// One logged collapse (or relocation): replaying removed -> added (forward)
+// or added -> removed (backward) moves between consecutive meshes.
+struct Collapse {
+  int first = -1, second = -1;  // the edge (sample indices)
+  int placement = -1;           // the sample that replaces them
+  PlacementKind kind = PlacementKind::First;
+  double cost = 0.0;   // what ranked it (see CollapseCost)
+  double error = 0.0;  // what the threshold is compared with (see CollapseCost)
+  std::vector<Triangle> removed;
+  std::vector<Triangle> added;
+};
+
+enum class StopReason { None, MaxError, TargetReached, NoValidCollapse, Interrupted };
+const char* stopReasonName(StopReason reason);
+
+enum class CollapseCost { ServedSamples, Centroid };
+const char* collapseCostName(CollapseCost cost);
+// Parses "served-samples" or "centroid"; throws InputError.
+CollapseCost parseCollapseCost(const std::string& name);
+
+struct DecimationOptions {
+  double maxError = 1.85;        // no collapse whose error exceeds this; <= 0: no threshold
+  int targetSamples = 0;         // stop at this many samples; 0: no target
+  bool oneRingCandidates = false;
+  CollapseCost cost = CollapseCost::ServedSamples;
+  // Served-sample cost: keep the paper's fixed boundary instead of letting
+  // it shrink (the centroid cost always keeps it: it cannot price what
+  // leaves the mesh).
+  bool fixedBoundary = false;
+  bool areaWeightedCost = true;  // centroid cost: false for the paper's plain mean over the updated triangles
+  // Served-sample cost: each sample's share of the walkthrough area
+  // (sampleAreaWeights), so that sums over samples estimate the area's
+  // error; empty: equal shares.
+  std::vector<double> sampleWeights;
+};
+
+// Where the costs come from: triangle errors for the centroid cost,
+// reconstruction errors of dense samples for the served-sample cost.
+struct DecimationErrors {
+  TriangleErrorSource* triangles = nullptr;
+  ReconstructionErrorSource* samples = nullptr;
+};
+
+struct DecimationStatistics {
+  uint64_t errorsComputed = 0;   // triangle (or served-sample) errors evaluated
+  uint64_t cacheHits = 0;        // errors served from the cache
+  uint64_t staleEntriesSkipped = 0;
+  uint64_t edgesCosted = 0;
+  uint64_t collapseChecksFailed = 0;  // popped entries whose cost had changed
+};
+
+class EdgeCollapseDecimator {
+public:
+  // Costs every edge up front (the long part on a dense mesh): costing, if
+  // given, counts the errors it computes; Ctrl-C throws Interrupted. The
+  // cost's error source must be given.
+  EdgeCollapseDecimator(const ViewMesh& mesh, DecimationErrors errors, DecimationOptions options,
+                        ProgressReporter* costing = nullptr);
+
+  // Performs the cheapest valid collapse unless a stop condition holds;
+  // returns false and sets stopReason() when it stops.
+  bool step();
+  // Collapses until a stop condition; reports progress; Ctrl-C stops it.
+  StopReason run(ProgressReporter* progress = nullptr);
+
+  // The cheapest valid collapse (what step() would do, stop conditions
+  // aside), or nothing if none is left.
+  std::optional<Collapse> peekNextCollapse();
+  // Its cost, +inf if there is none.
+  double nextCost();
+  // After stopping at the threshold: the lowest error of a collapse it
+  // refused (+inf if none was refused).
+  double lowestRefusedError() const;
+  // Whether collapsing the edge (first, second) into placement is valid now.
+  bool isValidCollapse(int first, int second, int placement) const;
+  // That collapse with its cost and error as the decimator would rank it
+  // (not performed), or nothing if it is invalid or over the threshold.
+  std::optional<Collapse> evaluateCollapse(int first, int second, int placement);
+  StopReason stopReason() const { return stopReason_; }
+  // For the time left: the collapses to the target count, or, under an
+  // error threshold, until the error reaches it at the pace of the last 32.
+  size_t expectedRemainingCollapses() const;
+  int vertexCount() const { return vertexCount_; }
+  int triangleCount() const;
+  ViewMesh mesh() const;
+  const std::vector<Collapse>& log() const { return log_; }
+  const DecimationStatistics& statistics() const { return statistics_; }
+  // Error of a triangle, from the cache or computed (centroid cost).
+  double triangleError(const Triangle& triangle);
+  // Served-sample cost: the weighted mean error of the dense samples that
+  // are not references, each from the triangle serving it.
+  double servedSampleMeanError() const;
+
+private:
+  struct Plan {
+    int placement = -1;
+    PlacementKind kind = PlacementKind::First;
+    std::vector<int> removed;         // triangle ids
+    std::vector<Triangle> added;
+    std::vector<int> served;          // served-sample cost: the samples whose triangle changes
+    std::vector<int> servedBy;        // per served sample: index into added, or -1 - id of an existing triangle
+    std::vector<double> servedDistance;  // from the sample to that triangle (0 inside)
+  };
+  struct EdgeState {
+    uint64_t stamp = 0;
+    double cost = std::numeric_limits<double>::infinity();
+    double error = 0.0;
+    double lowestRefusedError = std::numeric_limits<double>::infinity();  // over the threshold
+    Plan plan;
+    int midpointSample = -1;          // the free sample nearest the midpoint
+    double midpointDistance = 0.0;
+  };
+  struct SampleKey {
+    uint64_t triangle;  // tripleKey of the sorted triangle
+    int sample;
+    bool operator==(const SampleKey&) const = default;
+  };
+  struct SampleKeyHash {
+    size_t operator()(const SampleKey& key) const { return std::hash<uint64_t>()(key.triangle * 1000003u + uint64_t(key.sample)); }
+  };
+  struct HeapEntry {
+    double cost;
+    int first, second;
+    uint64_t stamp;
+    bool operator>(const HeapEntry& other) const {
+      if (cost != other.cost) return cost > other.cost;
+      if (first != other.first) return first > other.first;
+      return second > other.second;
+    }
+  };
+  using Edge = std::pair<int, int>;
+
+  std::vector<int> neighboursOf(int vertex) const;
+  std::vector<int> edgeTriangles(int a, int b) const;
+  std::vector<int> boundaryNeighbours(int vertex) const;
+  bool onOpenSegment(int sample, int from, int to) const;
+  bool simulate(int a, int b, int placement, PlacementKind kind, Plan& plan) const;
+  bool boundaryMayShrink() const;
+  bool keepsFixedBoundary(int a, int b, int placement, const std::vector<int>& boundaryA,
+                          const std::vector<int>& boundaryB) const;
+  bool staysInside(const Plan& plan) const;
+  bool keepsEveryVertex(int a, int b, const Plan& plan) const;
+  const Triangle& servingTriangle(const Plan& plan, size_t i) const;
+  double weightOf(int sample) const;
+  std::vector<std::pair<int, PlacementKind>> candidates(int a, int b, EdgeState& state) const;
+  void assignServedSamples(int a, int b, Plan& plan) const;
+  void costEdges(const std::vector<Edge>& edges, ProgressReporter* progress = nullptr);
+  void ensureErrors(const std::vector<Triangle>& triangles, ProgressReporter* progress = nullptr);
+  void ensureSampleErrors(const std::vector<SampleReconstruction>& requests, ProgressReporter* progress = nullptr);
+  double sampleError(const Triangle& triangle, int sample) const;
+  double meanError(const std::vector<Triangle>& triangles);
+  // (cost, error) of a simulated collapse.
+  std::pair<double, double> evaluate(const Plan& plan);
+  void serveInitialSamples(const ViewMesh& mesh, ProgressReporter* progress);
+  const HeapEntry* peekValid();
+  void apply(const Edge& edge, const EdgeState& state);
+
+  std::vector<glm::dvec2> positions_;
+  std::vector<Triangle> triangles_;
+  std::vector<char> alive_;
+  std::vector<std::vector<int>> incident_;  // alive triangles of each sample
+  std::vector<char> isVertex_;
+  int vertexCount_ = 0;
+  DecimationErrors errors_;
+  DecimationOptions options_;
+  std::unordered_map<uint64_t, double> cache_;  // triangle errors by tripleKey
+  // Served-sample cost: the triangle serving each sample (-1 for
+  // references), its error from there, and each triangle's samples.
+  std::vector<int> home_;
+  std::vector<double> homeError_;
+  std::vector<double> homeDistance_;  // 0 inside the home triangle
+  std::set<int> outside_;             // samples outside the mesh (where its boundary shrank)
+  std::vector<std::vector<int>> served_;
+  std::unordered_map<SampleKey, double, SampleKeyHash> sampleCache_;
+  std::map<Edge, EdgeState> edges_;
+  std::priority_queue<HeapEntry, std::vector<HeapEntry>, std::greater<HeapEntry>> heap_;
+  uint64_t nextStamp_ = 1;
+  std::vector<Collapse> log_;
+  StopReason stopReason_ = StopReason::None;
+  DecimationStatistics statistics_;
+};
+
+// The triangles after replaying the first `steps` collapses of a log onto
+// the initial triangles (forward), or the initial triangles back from the
+// final ones (steps counted from the end, backward).
+std::vector<Triangle> replayForward(std::vector<Triangle> initial, std::span<const Collapse> log, size_t steps);
+std::vector<Triangle> replayBackward(std::vector<Triangle> final, std::span<const Collapse> log, size_t steps);
+
+// Samples left after the first `steps` entries of a log (relocations keep
+// the count).
+int samplesAfter(int initialSamples, std::span<const Collapse> log, size_t steps);
+// The last step of the log at which `samples` samples are left (so the
+// refinement is included at the final count), or nothing if the log never
+// has that many.
+std::optional<size_t> lastStepWithSamples(int initialSamples, std::span<const Collapse> log, int samples);
+
+}  // namespace triwalk

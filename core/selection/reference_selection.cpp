@@ -1,0 +1,58 @@
+#include "core/selection/reference_selection.h"
+
+#include "core/support/errors.h"
+#include "core/support/progress.h"
+
+#include <chrono>
+
+namespace triwalk {
+
+SelectionRun selectReferences(const Dataset& dataset, DatasetTriangleErrors& errors, const SelectionSettings& requested,
+                              bool quiet) {
+  SelectionRun run;
+  const ViewMesh initial = ViewMesh::delaunay(samplePositions(dataset), {}, dataset.manifestPath().string());
+  SelectionSettings settings = requested;
+  if (settings.areaWeights) {
+    const std::vector<double> weights = sampleAreaWeights(initial.positions(), dataset.walkableRegion());
+    settings.decimation.sampleWeights = weights;
+    settings.refinement.sampleWeights = weights;
+  }
+  run.initialSamples = initial.vertexCount();
+  // One cache of dense-sample errors serves the collapses and the
+  // refinement, which starts from the errors the collapses left.
+  CachingReconstructionErrors sampleErrors(errors);
+  const auto start = std::chrono::steady_clock::now();
+  ProgressReporter costing("cost every edge", 0, quiet);
+  EdgeCollapseDecimator decimator(initial, DecimationErrors{&errors, &sampleErrors}, settings.decimation, &costing);
+  costing.finish();
+  run.costingSeconds = costing.elapsedSeconds();
+  const int target = settings.decimation.targetSamples;
+  const size_t expected = target > 0 ? size_t(std::max(0, initial.vertexCount() - target)) : 0;
+  ProgressReporter progress("collapse", expected, quiet);
+  run.stopReason = decimator.run(&progress);
+  progress.finish();
+  if (run.stopReason == StopReason::Interrupted) throw Interrupted();
+  run.collapseSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.statistics = decimator.statistics();
+  run.collapses = decimator.log().size();
+
+  ProgressReporter refining("refine: move references", 0, quiet || settings.refinement.radius <= 0.0);
+  run.refinement = refineSelection(initial.positions(), decimator.mesh().triangles(), sampleErrors, settings.refinement,
+                                   &refining);
+  refining.finish();
+  run.refinementSeconds = refining.elapsedSeconds();
+
+  const ViewMesh final(initial.positions(), run.refinement.triangles);
+  Selection& selection = run.selection;
+  selection.method = "edge_collapse";
+  selection.samples = final.vertices();
+  selection.triangles = final.triangles();
+  selection.initialTriangles = initial.triangles();
+  selection.collapses = decimator.log();
+  selection.collapses.insert(selection.collapses.end(), run.refinement.moves.begin(), run.refinement.moves.end());
+  selection.stopReason = stopReasonName(run.stopReason);
+  selection.nextCost = run.stopReason == StopReason::MaxError ? decimator.lowestRefusedError() : decimator.nextCost();
+  return run;
+}
+
+}  // namespace triwalk

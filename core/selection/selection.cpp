@@ -1,0 +1,169 @@
+#include "core/selection/selection.h"
+
+#include "core/io/json_fields.h"
+#include "core/support/errors.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace triwalk {
+
+namespace {
+
+const std::map<std::string, PlacementKind> kPlacementKinds = {{"first", PlacementKind::First},
+                                                             {"second", PlacementKind::Second},
+                                                             {"midpoint", PlacementKind::Midpoint},
+                                                             {"one-ring", PlacementKind::OneRing},
+                                                             {"relocation", PlacementKind::Relocation}};
+
+nlohmann::json trianglesToJson(const std::vector<Triangle>& triangles, const Dataset& dataset) {
+  nlohmann::json array = nlohmann::json::array();
+  for (const Triangle& t : triangles) array.push_back({dataset.sample(t[0]).id, dataset.sample(t[1]).id, dataset.sample(t[2]).id});
+  return array;
+}
+
+class SelectionReader {
+public:
+  SelectionReader(const Dataset& dataset, const std::string& file) : dataset_(dataset), file_(file) {}
+
+  int sample(const nlohmann::json& value, const std::string& where) const {
+    if (!value.is_number_integer()) throw InputError(file_, where + ": sample id is not an integer");
+    const int index = dataset_.sampleIndexOfId(value.get<int>());
+    if (index < 0) {
+      throw InputError(file_, where + ": sample id " + std::to_string(value.get<int>()) + " is not in " +
+                                  dataset_.manifestPath().string());
+    }
+    return index;
+  }
+
+  std::vector<Triangle> triangles(const JsonObject& object, const std::string& key) const {
+    std::vector<Triangle> result;
+    const nlohmann::json& array = object.array(key);
+    for (size_t i = 0; i < array.size(); ++i) {
+      const std::string where = object.where(key) + "[" + std::to_string(i) + "]";
+      if (!array[i].is_array() || array[i].size() != 3) throw InputError(file_, where + ": a triangle is three sample ids");
+      Triangle t{sample(array[i][0], where), sample(array[i][1], where), sample(array[i][2], where)};
+      if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) throw InputError(file_, where + ": repeats a sample");
+      const glm::dvec2 a(dataset_.sample(t[0]).position), b(dataset_.sample(t[1]).position), c(dataset_.sample(t[2]).position);
+      if (orientation(a, b, c) <= 0) throw InputError(file_, where + ": not counter-clockwise (or flat)");
+      result.push_back(canonicalTriangle(t));
+    }
+    std::sort(result.begin(), result.end());
+    return result;
+  }
+
+private:
+  const Dataset& dataset_;
+  std::string file_;
+};
+
+}  // namespace
+
+std::vector<glm::dvec2> samplePositions(const Dataset& dataset) {
+  std::vector<glm::dvec2> positions;
+  for (int i = 0; i < dataset.sampleCount(); ++i) positions.emplace_back(dataset.sample(i).position);
+  return positions;
+}
+
+void writeSelection(const std::filesystem::path& path, const Selection& selection, const Dataset& dataset) {
+  nlohmann::json samples = nlohmann::json::array();
+  for (int s : selection.samples) samples.push_back(dataset.sample(s).id);
+  nlohmann::json collapses = nlohmann::json::array();
+  for (const Collapse& c : selection.collapses) {
+    nlohmann::json entry = {{"first", dataset.sample(c.first).id},
+                            {"placement", dataset.sample(c.placement).id},
+                            {"kind", placementName(c.kind)},
+                            {"cost", c.cost},
+                            {"error", c.error},
+                            {"removed", trianglesToJson(c.removed, dataset)},
+                            {"added", trianglesToJson(c.added, dataset)}};
+    if (c.kind != PlacementKind::Relocation) entry["second"] = dataset.sample(c.second).id;
+    collapses.push_back(std::move(entry));
+  }
+  nlohmann::json document = {{"format", "triwalk-selection"},
+                             {"version", kSelectionFormatVersion},
+                             {"method", selection.method},
+                             {"dataset", {{"scene", dataset.manifest().scene}, {"samples", dataset.sampleCount()}}},
+                             {"settings", selection.settings},
+                             {"stop_reason", selection.stopReason},
+                             {"samples", samples},
+                             {"triangles", trianglesToJson(selection.triangles, dataset)}};
+  if (std::isfinite(selection.nextCost)) document["next_cost"] = selection.nextCost;
+  if (!selection.initialTriangles.empty()) {
+    document["initial_triangles"] = trianglesToJson(selection.initialTriangles, dataset);
+    document["collapses"] = collapses;
+  }
+  writeJsonFile(path, document);
+}
+
+Selection readSelection(const std::filesystem::path& path, const Dataset& dataset) {
+  const nlohmann::json document = readJsonFile(path);
+  const std::string file = path.string();
+  const JsonObject root(document, file);
+  if (root.stringOr("format", "") != "triwalk-selection") root.fail("not a triwalk selection (format field)");
+  const int version = root.integer("version");
+  if (version != kSelectionFormatVersion) {
+    root.fail("unknown selection version " + std::to_string(version) + " (this triwalk reads version " +
+              std::to_string(kSelectionFormatVersion) + ")");
+  }
+  const SelectionReader reader(dataset, file);
+  Selection selection;
+  selection.method = root.string("method");
+  selection.stopReason = root.stringOr("stop_reason", "");
+  selection.nextCost = root.numberOr("next_cost", std::numeric_limits<double>::infinity());
+  if (root.has("settings")) selection.settings = root.object("settings").json();
+  const nlohmann::json& samples = root.array("samples");
+  std::set<int> kept;
+  for (size_t i = 0; i < samples.size(); ++i) {
+    const int index = reader.sample(samples[i], "samples[" + std::to_string(i) + "]");
+    if (!kept.insert(index).second) root.fail("samples: id " + std::to_string(samples[i].get<int>()) + " appears twice");
+  }
+  selection.samples.assign(kept.begin(), kept.end());
+  if (selection.samples.size() < 3) root.fail("a selection needs at least 3 samples");
+  selection.triangles = reader.triangles(root, "triangles");
+  if (selection.triangles.empty()) root.fail("a selection needs at least one triangle");
+  for (const Triangle& t : selection.triangles) {
+    for (int v : t) {
+      if (!kept.count(v)) root.fail("triangles use sample " + std::to_string(dataset.sample(v).id) + " that is not among samples");
+    }
+  }
+  if (root.has("initial_triangles")) {
+    selection.initialTriangles = reader.triangles(root, "initial_triangles");
+    const nlohmann::json& collapses = root.array("collapses");
+    for (size_t i = 0; i < collapses.size(); ++i) {
+      const JsonObject entry = root.element("collapses", i);
+      Collapse c;
+      const std::string where = entry.where("");
+      const auto kind = kPlacementKinds.find(entry.string("kind"));
+      if (kind == kPlacementKinds.end()) entry.fail("unknown placement kind '" + entry.string("kind") + "'");
+      c.kind = kind->second;
+      c.first = reader.sample(entry.json().at("first"), where + "first");
+      if (c.kind != PlacementKind::Relocation) c.second = reader.sample(entry.json().at("second"), where + "second");
+      c.placement = reader.sample(entry.json().at("placement"), where + "placement");
+      c.cost = entry.number("cost");
+      c.error = entry.numberOr("error", c.cost);
+      c.removed = reader.triangles(entry, "removed");
+      c.added = reader.triangles(entry, "added");
+      selection.collapses.push_back(std::move(c));
+    }
+    // The log must lead from the initial to the final triangles.
+    std::vector<Triangle> replayed = selection.initialTriangles;
+    for (size_t i = 0; i < selection.collapses.size(); ++i) {
+      for (const Triangle& t : selection.collapses[i].removed) {
+        if (!std::binary_search(replayed.begin(), replayed.end(), t)) {
+          root.fail("collapses[" + std::to_string(i) + "] removes a triangle the mesh does not have at that step");
+        }
+      }
+      replayed = replayForward(std::move(replayed), std::span(selection.collapses).subspan(i, 1), 1);
+    }
+    if (replayed != selection.triangles) root.fail("replaying the collapses does not give the final triangles");
+  }
+  return selection;
+}
+
+ViewMesh selectionMesh(const Selection& selection, const Dataset& dataset) {
+  return ViewMesh(samplePositions(dataset), selection.triangles);
+}
+
+}  // namespace triwalk

@@ -1,0 +1,61 @@
+#pragma once
+// selection.json: which samples were kept, their triangles, and for edge
+// collapse the dense triangulation and the collapse log, so any prefix of
+// the decimation can be replayed (the viewer steps through it).
+//
+// {
+//   "format": "triwalk-selection", "version": 1,
+//   "method": "edge_collapse",
+//   "dataset": {"scene": "builtin", "samples": 450},
+//   "settings": {...}, "stop_reason": "...", "next_cost": 1.91,
+//   "samples": [ids], "triangles": [[id, id, id], ...]        (counter-clockwise)
+//   "initial_triangles": [...],
+//   "collapses": [{"first": id, "second": id, "placement": id, "kind": "midpoint",
+//                  "cost": 0.41, "error": 1.2, "removed": [[...]], "added": [[...]]}, ...,
+//                 {"first": id, "placement": id, "kind": "relocation", "cost": 1.56, ...}]
+// }
+// The log's collapses lead from the dense triangulation to the decimated
+// mesh; relocations (the refinement after it, no "second") follow them and
+// keep the sample count; their cost is the mean dense-sample error after.
+// A collapse's "error" is what the threshold was compared with (see
+// CollapseCost; the cost when absent).
+// Ids are the data set's sample ids; in memory everything is sample indices.
+
+#include "core/io/dataset.h"
+#include "core/selection/edge_collapse_decimator.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace triwalk {
+
+constexpr int kSelectionFormatVersion = 1;
+
+struct Selection {
+  std::string method;
+  std::vector<int> samples;
+  std::vector<Triangle> triangles;
+  std::vector<Triangle> initialTriangles;  // edge collapse only
+  std::vector<Collapse> collapses;         // edge collapse only
+  std::string stopReason;
+  double nextCost = 0.0;
+  nlohmann::json settings = nlohmann::json::object();
+};
+
+// Writes atomically.
+void writeSelection(const std::filesystem::path& path, const Selection& selection, const Dataset& dataset);
+
+// Reads and validates against the data set: known ids, triangles over kept
+// samples, counter-clockwise, the log replays to the final triangles.
+Selection readSelection(const std::filesystem::path& path, const Dataset& dataset);
+
+// The selection's triangles as a mesh over the data set's positions.
+ViewMesh selectionMesh(const Selection& selection, const Dataset& dataset);
+
+// (x, y) of every sample, by index.
+std::vector<glm::dvec2> samplePositions(const Dataset& dataset);
+
+}  // namespace triwalk

@@ -1,0 +1,221 @@
+#include "core/selection/triangle_error.h"
+
+#include "core/image/color.h"
+#include "core/support/errors.h"
+#include "core/support/progress.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace triwalk {
+
+int errorWidthFor(const Dataset& dataset, int requested) {
+  const int width = requested > 0 ? requested : dataset.largestWidthAtMost(kDefaultErrorWidth);
+  dataset.downsamplingFactor(width, "--error-width");
+  return width;
+}
+
+DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const TriangleErrorSettings& settings, bool quiet)
+    : dataset_(dataset), settings_(settings), layerCache_(settings.layerCacheBytes) {
+  dataset.downsamplingFactor(settings.width, "--error-width");
+  const int samples = dataset.sampleCount(), probes = dataset.probeCount();
+  sources_.resize(size_t(samples));
+  sampleDisplay_.resize(size_t(samples));
+  probeDisplay_.resize(size_t(probes));
+  for (int i = 0; i < samples; ++i) positions_.emplace_back(dataset.sample(i).position);
+
+  ProgressReporter progress("load " + std::to_string(settings.width) + "x" + std::to_string(settings.width / 2),
+                            size_t(samples + probes), quiet);
+  tbb::parallel_for(0, samples + probes, [&](int i) {
+    if (interruptRequested()) return;
+    const bool isSample = i < samples;
+    const ViewRecord& view = isSample ? dataset.sample(i) : dataset.probe(i - samples);
+    const Panorama panorama = dataset.loadView(view, settings.width);
+    if (isSample) {
+      sources_[size_t(i)] = std::make_unique<WarpSource>(panorama, view.position, degreesToRadians(view.yawDegrees),
+                                                         settings.synthesis.warp);
+      sampleDisplay_[size_t(i)] = toDisplayColors(panorama.color);
+    } else {
+      probeDisplay_[size_t(i - samples)] = toDisplayColors(panorama.color);
+    }
+    progress.advance();
+  });
+  progress.finish();
+  throwIfInterrupted();
+}
+
+TriangleDestinations parseTriangleDestinations(const std::string& name) {
+  if (name == "centroid") return TriangleDestinations::Centroid;
+  if (name == "quadrature") return TriangleDestinations::Quadrature;
+  if (name == "interior") return TriangleDestinations::Interior;
+  throw InputError("--triangle-destinations", "unknown choice '" + name + "' (use centroid, quadrature or interior)");
+}
+
+std::vector<std::pair<int, double>> DatasetTriangleErrors::destinationsOf(const Triangle& triangle) const {
+  const glm::dvec2 a = positions_[size_t(triangle[0])], b = positions_[size_t(triangle[1])], c = positions_[size_t(triangle[2])];
+  const glm::dvec2 centroid = (a + b + c) / 3.0;
+  if (settings_.destinations == TriangleDestinations::Interior) {
+    std::vector<int> inside;
+    for (int s = 0; s < int(positions_.size()); ++s) {
+      if (s == triangle[0] || s == triangle[1] || s == triangle[2]) continue;
+      const glm::dvec2 p = positions_[size_t(s)];
+      if (orientation(a, b, p) > 0 && orientation(b, c, p) > 0 && orientation(c, a, p) > 0) inside.push_back(s);
+    }
+    if (!inside.empty()) {
+      // Spread: the sample nearest the centroid, then each next farthest
+      // from those chosen (ties: the lower index).
+      std::vector<int> chosen;
+      std::vector<double> nearest(inside.size(), std::numeric_limits<double>::max());
+      size_t next = 0;
+      for (size_t i = 1; i < inside.size(); ++i) {
+        if (glm::length(positions_[size_t(inside[i])] - centroid) < glm::length(positions_[size_t(inside[next])] - centroid)) next = i;
+      }
+      while (chosen.size() < std::min<size_t>(inside.size(), kMaxInteriorDestinations)) {
+        chosen.push_back(inside[next]);
+        size_t farthest = 0;
+        for (size_t i = 0; i < inside.size(); ++i) {
+          nearest[i] = std::min(nearest[i], glm::length(positions_[size_t(inside[i])] - positions_[size_t(inside[next])]));
+          if (nearest[i] > nearest[farthest]) farthest = i;
+        }
+        next = farthest;
+      }
+      std::vector<std::pair<int, double>> destinations;
+      for (int sample : chosen) destinations.emplace_back(sample, 1.0 / double(chosen.size()));
+      return destinations;
+    }
+  }
+  std::vector<glm::dvec2> points = {centroid};
+  if (settings_.destinations == TriangleDestinations::Quadrature) {
+    points.push_back((centroid + a + b) / 3.0);
+    points.push_back((centroid + b + c) / 3.0);
+    points.push_back((centroid + c + a) / 3.0);
+  }
+  std::vector<std::pair<int, double>> destinations;
+  for (const glm::dvec2& point : points) {
+    int best = -1;
+    double bestDistance = std::numeric_limits<double>::max();
+    for (int s = 0; s < int(positions_.size()); ++s) {
+      if (s == triangle[0] || s == triangle[1] || s == triangle[2]) continue;
+      const double d = glm::length(positions_[size_t(s)] - point);
+      if (d < bestDistance) bestDistance = d, best = s;
+    }
+    TRIWALK_CHECK(best >= 0, "a triangle needs a destination sample besides its vertices");
+    const auto same = std::find_if(destinations.begin(), destinations.end(), [&](const auto& d) { return d.first == best; });
+    if (same != destinations.end()) {
+      same->second += 1.0 / double(points.size());
+    } else {
+      destinations.emplace_back(best, 1.0 / double(points.size()));
+    }
+  }
+  return destinations;
+}
+
+SynthesizedView DatasetTriangleErrors::synthesize(std::span<const int> references, glm::vec3 position) const {
+  std::vector<const WarpSource*> sources;
+  for (int reference : references) sources.push_back(sources_[size_t(reference)].get());
+  const int width = settings_.width;
+  return synthesizeView(sources, DestinationCamera::panorama(position, width, width / 2), settings_.synthesis);
+}
+
+ReconstructionError DatasetTriangleErrors::errorAt(std::span<const int> references, glm::vec3 position,
+                                                   const ColorImage& truthDisplay, ScalarImage* perPixel) const {
+  const SynthesizedView view = synthesize(references, position);
+  return reconstructionError(toDisplayColors(view.blended.color), view.blended.hole, truthDisplay, settings_.error,
+                             perPixel);
+}
+
+double DatasetTriangleErrors::sampleError(const Triangle& triangle, int destination) {
+  const glm::vec3 position = dataset_.sample(destination).position;
+  const DestinationCamera camera = DestinationCamera::panorama(position, settings_.width, settings_.width / 2);
+  std::shared_ptr<const CompactLayer> layers[3];
+  const CompactLayer* pointers[3];
+  glm::vec3 sourcePositions[3];
+  for (int k = 0; k < 3; ++k) {
+    const WarpSource& source = *sources_[size_t(triangle[size_t(k)])];
+    layers[k] = layerCache_.get(triangle[size_t(k)], destination,
+                                [&] { return warpToCamera(source, camera, settings_.synthesis.warp.method); });
+    pointers[k] = layers[k].get();
+    sourcePositions[k] = source.position();
+  }
+  const std::vector<float> weights = blendWeights(position, sourcePositions, settings_.synthesis.blend);
+  // Blend and compare pixel by pixel, without building the blended image.
+  const ColorImage& truth = sampleDisplay_[size_t(destination)];
+  ErrorAccumulator accumulator(truth.width, truth.height, settings_.error);
+  tbb::parallel_for(0, truth.height, [&](int y) {
+    for (int x = 0; x < truth.width; ++x) {
+      const size_t i = size_t(y) * size_t(truth.width) + size_t(x);
+      const BlendedPixel pixel = blendPixelOf<CompactLayer>(pointers, weights, i, settings_.synthesis.blend);
+      accumulator.add(y, displayColorFast(pixel.color), pixel.hole, truth.pixels[i]);
+    }
+  });
+  return accumulator.result().total;
+}
+
+void DatasetTriangleErrors::computeErrors(std::span<const Triangle> triangles, std::span<double> errors) {
+  tbb::parallel_for(size_t(0), triangles.size(), [&](size_t i) {
+    const Triangle& triangle = triangles[i];
+    double error = 0.0;
+    for (const auto& [destination, weight] : destinationsOf(triangle)) error += weight * sampleError(triangle, destination);
+    errors[i] = error;
+    ++evaluations_;
+  });
+}
+
+void DatasetTriangleErrors::computeReconstructionErrors(std::span<const SampleReconstruction> requests,
+                                                        std::span<double> errors) {
+  tbb::parallel_for(size_t(0), requests.size(), [&](size_t i) {
+    errors[i] = sampleError(requests[i].references, requests[i].destination);
+    ++evaluations_;
+  });
+}
+
+namespace {
+
+// Both caches: answer what is known under the lock, compute the rest
+// outside it (the long part, in parallel inside the source), then store.
+template <class Request, class Key, class KeyOf, class Compute>
+void serveFromCache(std::mutex& mutex, std::map<Key, double>& known, std::span<const Request> requests,
+                    std::span<double> errors, KeyOf keyOf, Compute compute) {
+  std::vector<Request> missing;
+  std::vector<size_t> missingAt;
+  {
+    std::lock_guard lock(mutex);
+    for (size_t i = 0; i < requests.size(); ++i) {
+      const auto found = known.find(keyOf(requests[i]));
+      if (found != known.end()) {
+        errors[i] = found->second;
+      } else {
+        missing.push_back(requests[i]);
+        missingAt.push_back(i);
+      }
+    }
+  }
+  if (missing.empty()) return;
+  std::vector<double> computed(missing.size());
+  compute(missing, computed);
+  std::lock_guard lock(mutex);
+  for (size_t j = 0; j < missing.size(); ++j) {
+    errors[missingAt[j]] = computed[j];
+    known[keyOf(missing[j])] = computed[j];
+  }
+}
+
+}  // namespace
+
+void CachingTriangleErrors::computeErrors(std::span<const Triangle> triangles, std::span<double> errors) {
+  serveFromCache(mutex_, known_, triangles, errors, sortedTriangle,
+                 [&](std::span<const Triangle> missing, std::span<double> computed) { source_.computeErrors(missing, computed); });
+}
+
+void CachingReconstructionErrors::computeReconstructionErrors(std::span<const SampleReconstruction> requests,
+                                                              std::span<double> errors) {
+  serveFromCache(
+      mutex_, known_, requests, errors, [](const SampleReconstruction& request) { return request; },
+      [&](std::span<const SampleReconstruction> missing, std::span<double> computed) {
+        source_.computeReconstructionErrors(missing, computed);
+      });
+}
+
+}  // namespace triwalk

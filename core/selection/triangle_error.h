@@ -1,0 +1,151 @@
+#pragma once
+// The error of a triangle of reference views (docs/DESIGN.md, "Triangle
+// error"): warp its three vertices' panoramas to destinations
+// inside it, blend, and compare with the panoramas captured there
+// (E = alpha R + beta B). A destination is the nearest dense sample to a
+// point that is not a vertex of the triangle. The paper (and docs/DESIGN.md)
+// use the centroid alone; "quadrature" also uses the centroids of the
+// three sub-triangles (centroid, two vertices), weighted equally, so that
+// long or large triangles are judged over their area, not at one point.
+// Everything is held at the decimation resolution in memory.
+
+#include "core/geometry/planar_geometry.h"
+#include "core/io/dataset.h"
+#include "core/synthesis/reconstruction_error.h"
+#include "core/synthesis/view_synthesis.h"
+#include "core/synthesis/warp_layer_cache.h"
+
+#include <atomic>
+#include <map>
+#include <mutex>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace triwalk {
+
+// Where decimation gets triangle errors from: the data set here, synthetic
+// costs in unit tests.
+class TriangleErrorSource {
+public:
+  virtual ~TriangleErrorSource() = default;
+  // E of each triangle (sample indices), in order; may run in parallel.
+  virtual void computeErrors(std::span<const Triangle> triangles, std::span<double> errors) = 0;
+};
+
+// E of reconstructing a dense sample from a triangle's three samples: the
+// data set (DatasetTriangleErrors) or synthetic errors in unit tests.
+struct SampleReconstruction {
+  Triangle references;  // sorted sample indices
+  int destination = -1;
+  auto operator<=>(const SampleReconstruction&) const = default;
+};
+
+class ReconstructionErrorSource {
+public:
+  virtual ~ReconstructionErrorSource() = default;
+  // E of each request, in order; may run in parallel.
+  virtual void computeReconstructionErrors(std::span<const SampleReconstruction> requests, std::span<double> errors) = 0;
+};
+
+// Centroid: the paper's. Quadrature: also the three sub-triangle
+// centroids. Interior: the dense samples inside the triangle, up to
+// kMaxInteriorDestinations spread by farthest-point picking (the centroid
+// sample when none is inside), the estimate the paper names ideal.
+enum class TriangleDestinations { Centroid, Quadrature, Interior };
+constexpr int kMaxInteriorDestinations = 8;
+
+// Parses "centroid", "quadrature" or "interior"; throws InputError.
+TriangleDestinations parseTriangleDestinations(const std::string& name);
+
+// Errors at most this wide unless asked (the width the main job and
+// docs/RESULTS.md measure at); commands pick the largest width not above it
+// that divides the data set's (Dataset::largestWidthAtMost).
+inline constexpr int kDefaultErrorWidth = 256;
+// The error width for a request: `requested` if given (> 0), else that
+// default; throws InputError naming --error-width if it does not divide the
+// data set's width.
+int errorWidthFor(const Dataset& dataset, int requested);
+
+struct TriangleErrorSettings {
+  int width = kDefaultErrorWidth;  // panorama width the errors are computed at
+  size_t layerCacheBytes = defaultLayerCacheBytes();  // warped layers kept for reuse
+  TriangleDestinations destinations = TriangleDestinations::Centroid;
+  SynthesisOptions synthesis;
+  ErrorOptions error;
+};
+
+class DatasetTriangleErrors final : public TriangleErrorSource, public ReconstructionErrorSource {
+public:
+  // Loads every sample (and probe) at the settings' width, in parallel,
+  // with progress; throws InputError for bad files.
+  DatasetTriangleErrors(const Dataset& dataset, const TriangleErrorSettings& settings, bool quiet);
+
+  void computeErrors(std::span<const Triangle> triangles, std::span<double> errors) override;
+  void computeReconstructionErrors(std::span<const SampleReconstruction> requests, std::span<double> errors) override;
+
+  // The destination samples of a triangle with their weights (summing to
+  // 1): for each point (centroid, sub-triangle centroids), the nearest
+  // sample that is not a vertex (ties: the lower index).
+  std::vector<std::pair<int, double>> destinationsOf(const Triangle& triangle) const;
+
+  // Reconstruction of an arbitrary position from reference samples,
+  // compared with a panorama's display colors.
+  ReconstructionError errorAt(std::span<const int> references, glm::vec3 position, const ColorImage& truthDisplay,
+                              ScalarImage* perPixel = nullptr) const;
+  SynthesizedView synthesize(std::span<const int> references, glm::vec3 position) const;
+
+  const Dataset& dataset() const { return dataset_; }
+  const TriangleErrorSettings& settings() const { return settings_; }
+  const ColorImage& sampleDisplay(int sample) const { return sampleDisplay_[size_t(sample)]; }
+  const ColorImage& probeDisplay(int probe) const { return probeDisplay_[size_t(probe)]; }
+  const WarpSource& source(int sample) const { return *sources_[size_t(sample)]; }
+  uint64_t evaluations() const { return evaluations_; }
+  const WarpLayerCache& layerCache() const { return layerCache_; }
+
+private:
+  // E of a triangle reconstructing a destination sample, from cached layers.
+  double sampleError(const Triangle& triangle, int destination);
+
+  const Dataset& dataset_;
+  TriangleErrorSettings settings_;
+  std::vector<std::unique_ptr<WarpSource>> sources_;
+  std::vector<ColorImage> sampleDisplay_;
+  std::vector<ColorImage> probeDisplay_;
+  std::vector<glm::dvec2> positions_;
+  std::atomic<uint64_t> evaluations_{0};
+  WarpLayerCache layerCache_;
+};
+
+}  // namespace triwalk
+
+namespace triwalk {
+
+// Remembers every triangle error another source computed, so that a new
+// decimator (the viewer rebuilds one after stepping back) starts warm.
+// Thread-safe.
+class CachingTriangleErrors final : public TriangleErrorSource {
+public:
+  explicit CachingTriangleErrors(TriangleErrorSource& source) : source_(source) {}
+  void computeErrors(std::span<const Triangle> triangles, std::span<double> errors) override;
+
+private:
+  TriangleErrorSource& source_;
+  std::mutex mutex_;
+  std::map<Triangle, double> known_;  // by sorted vertices
+};
+
+// The same for dense-sample reconstructions: shared by the decimation, the
+// refinement after it and the viewer's decimators. Thread-safe.
+class CachingReconstructionErrors final : public ReconstructionErrorSource {
+public:
+  explicit CachingReconstructionErrors(ReconstructionErrorSource& source) : source_(source) {}
+  void computeReconstructionErrors(std::span<const SampleReconstruction> requests, std::span<double> errors) override;
+
+private:
+  ReconstructionErrorSource& source_;
+  std::mutex mutex_;
+  std::map<SampleReconstruction, double> known_;
+};
+
+}  // namespace triwalk

@@ -1,0 +1,78 @@
+#pragma once
+// Blend of warped layers, the paper's Eq. 1-2 made relative: per pixel,
+// z_front is the nearest distance over layers; the layers whose distance
+// lies within epsilon * z_front of it are averaged with weights
+// w_k = 1 / max(dist(D, S_k), r_min). Pixels no layer covers are holes.
+// Sky (+inf) blends with sky.
+
+#include "core/synthesis/warp.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <span>
+
+namespace triwalk {
+
+struct BlendOptions {
+  float epsilon = 0.05f;               // relative depth interval around z_front
+  float minimumWeightDistance = 0.1f;  // r_min, metres
+};
+
+struct BlendedView {
+  ColorImage color;                  // linear; black in holes
+  ScalarImage distance;              // z_front, metres; +inf for sky and holes
+  std::vector<uint8_t> hole;         // 1 where no layer covers the pixel
+  std::vector<uint8_t> contributors; // bit k set where layer k was blended
+};
+
+// One pixel of the blend; hole when no layer covers it.
+struct BlendedPixel {
+  glm::vec3 color{0.0f};  // linear
+  float distance = 0.0f;
+  uint8_t contributors = 0;
+  bool hole = true;
+};
+
+// The blend of one pixel over layers of any storage: each layer's
+// coveredAt(pixel), distanceAt(pixel) and colorAt(pixel) (WarpLayer here, the
+// warped-layer cache's half-float layers for decimation).
+template <typename Layer>
+BlendedPixel blendPixelOf(std::span<const Layer* const> layers, std::span<const float> weights, size_t pixel,
+                          const BlendOptions& options) {
+  BlendedPixel result;
+  float distances[8];
+  float front = std::numeric_limits<float>::infinity();
+  for (size_t k = 0; k < layers.size(); ++k) {
+    const bool covered = layers[k]->coveredAt(pixel);
+    distances[k] = covered ? layers[k]->distanceAt(pixel) : std::numeric_limits<float>::quiet_NaN();
+    if (!covered) continue;
+    result.hole = false;
+    front = std::min(front, distances[k]);
+  }
+  if (result.hole) return result;
+  glm::vec3 sum(0.0f);
+  float weightSum = 0.0f;
+  for (size_t k = 0; k < layers.size(); ++k) {
+    const float d = distances[k];
+    if (std::isnan(d)) continue;
+    const bool inInterval = std::isinf(front) ? std::isinf(d) : std::abs(d - front) < options.epsilon * front;
+    if (!inInterval) continue;
+    sum += weights[k] * layers[k]->colorAt(pixel);
+    weightSum += weights[k];
+    result.contributors |= uint8_t(1u << k);
+  }
+  result.color = sum / weightSum;
+  result.distance = front;
+  return result;
+}
+
+BlendedPixel blendPixel(std::span<const WarpLayer* const> layers, std::span<const float> weights, size_t pixel,
+                        const BlendOptions& options);
+
+// w_k for each source position, seen from the destination.
+std::vector<float> blendWeights(glm::vec3 destination, std::span<const glm::vec3> sources, const BlendOptions& options);
+
+BlendedView blendLayers(std::span<const WarpLayer* const> layers, std::span<const float> weights, const BlendOptions& options);
+
+}  // namespace triwalk

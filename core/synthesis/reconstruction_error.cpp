@@ -1,0 +1,77 @@
+#include "core/synthesis/reconstruction_error.h"
+
+#include "core/geometry/projection.h"
+#include "core/image/color.h"
+#include "core/support/errors.h"
+
+#include <cmath>
+
+namespace triwalk {
+
+PixelWeighting parsePixelWeighting(const std::string& name) {
+  if (name == "solid-angle") return PixelWeighting::SolidAngle;
+  if (name == "uniform") return PixelWeighting::Uniform;
+  throw InputError("--pixel-weighting", "unknown weighting '" + name + "' (use solid-angle or uniform)");
+}
+
+const char* pixelWeightingName(PixelWeighting weighting) {
+  return weighting == PixelWeighting::SolidAngle ? "solid-angle" : "uniform";
+}
+
+ColorImage toDisplayColors(const ColorImage& linear) {
+  ColorImage display(linear.width, linear.height);
+  for (size_t i = 0; i < linear.pixelCount(); ++i) display.pixels[i] = displayColorFast(linear.pixels[i]);
+  return display;
+}
+
+ErrorAccumulator::ErrorAccumulator(int width, int height, const ErrorOptions& options)
+    : width_(width), options_(options), badThreshold_(options.delta / 255.0), rowSquared_(size_t(height), 0.0),
+      rowBad_(size_t(height), 0.0), rowWeight_(size_t(height), 1.0) {
+  if (options.weighting == PixelWeighting::SolidAngle) {
+    const EquirectProjection projection{width, height, 0.0f};
+    for (int y = 0; y < height; ++y) rowWeight_[size_t(y)] = projection.rowSolidAngleWeight(y);
+  }
+}
+
+float ErrorAccumulator::add(int y, glm::vec3 reconstruction, bool hole, glm::vec3 truth) {
+  // Per pixel in float (display values in [0, 1]); rows sum in double.
+  const glm::vec3 difference = glm::abs((hole ? glm::vec3(0.0f) : reconstruction) - truth);
+  const float squared = glm::dot(difference, difference);
+  const float largest = std::max(difference.r, std::max(difference.g, difference.b));
+  rowSquared_[size_t(y)] += double(squared);
+  rowBad_[size_t(y)] += (hole || double(largest) > badThreshold_) ? 1.0 : 0.0;
+  return hole ? 1.0f : std::sqrt(squared / 3.0f);
+}
+
+ReconstructionError ErrorAccumulator::result() const {
+  double weightSum = 0.0, squaredSum = 0.0, badSum = 0.0;
+  for (size_t y = 0; y < rowWeight_.size(); ++y) {
+    weightSum += rowWeight_[y] * width_;
+    squaredSum += rowWeight_[y] * rowSquared_[y];
+    badSum += rowWeight_[y] * rowBad_[y];
+  }
+  ReconstructionError error;
+  error.rms = std::sqrt(squaredSum / (3.0 * weightSum));
+  error.badPercent = 100.0 * badSum / weightSum;
+  error.total = options_.alpha * error.rms + options_.beta * error.badPercent;
+  return error;
+}
+
+ReconstructionError reconstructionError(const ColorImage& reconstruction, const std::vector<uint8_t>& hole,
+                                        const ColorImage& truth, const ErrorOptions& options, ScalarImage* perPixel) {
+  TRIWALK_CHECK(reconstruction.width == truth.width && reconstruction.height == truth.height, "image sizes differ");
+  TRIWALK_CHECK(hole.empty() || hole.size() == truth.pixelCount(), "hole mask size differs");
+  const int width = truth.width, height = truth.height;
+  if (perPixel) *perPixel = ScalarImage(width, height);
+  ErrorAccumulator accumulator(width, height, options);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const size_t i = size_t(y) * size_t(width) + size_t(x);
+      const float pixelError = accumulator.add(y, reconstruction.pixels[i], !hole.empty() && hole[i], truth.pixels[i]);
+      if (perPixel) perPixel->pixels[i] = pixelError;
+    }
+  }
+  return accumulator.result();
+}
+
+}  // namespace triwalk

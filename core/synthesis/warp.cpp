@@ -1,0 +1,542 @@
+#include "core/synthesis/warp.h"
+
+#include "core/support/errors.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <numbers>
+
+namespace triwalk {
+
+StretchTest parseStretchTest(const std::string& name) {
+  if (name == "none") return StretchTest::None;
+  if (name == "grazing-angle") return StretchTest::GrazingAngle;
+  if (name == "depth-ratio") return StretchTest::DepthRatio;
+  throw InputError("--stretch-test", "unknown stretch test '" + name + "' (use grazing-angle, depth-ratio or none)");
+}
+
+const char* stretchTestName(StretchTest test) {
+  switch (test) {
+    case StretchTest::None: return "none";
+    case StretchTest::GrazingAngle: return "grazing-angle";
+    case StretchTest::DepthRatio: return "depth-ratio";
+  }
+  return "?";
+}
+
+// ---------------------------------------------------------------- source --
+
+void WarpSource::triangleVertices(uint32_t triangle, uint32_t vertices[3]) const {
+  const uint32_t width = uint32_t(width_);
+  const uint32_t quadTriangles = 2 * width * uint32_t(height_ - 1);
+  const uint32_t pixels = width * uint32_t(height_);
+  if (triangle < quadTriangles) {
+    const uint32_t quad = triangle / 2;
+    const uint32_t u = quad % width, v = quad / width;
+    const uint32_t u1 = (u + 1) % width;  // wraps across the source seam
+    const uint32_t a = v * width + u, b = v * width + u1, c = a + width, d = b + width;
+    if (triangle % 2 == 0) {
+      vertices[0] = a, vertices[1] = b, vertices[2] = d;
+    } else {
+      vertices[0] = a, vertices[1] = d, vertices[2] = c;
+    }
+    return;
+  }
+  const uint32_t fan = triangle - quadTriangles;
+  const uint32_t u = fan % width, u1 = (u + 1) % width;
+  if (fan < width) {
+    vertices[0] = pixels, vertices[1] = u, vertices[2] = u1;
+  } else {
+    const uint32_t lastRow = (uint32_t(height_) - 1) * width;
+    vertices[0] = pixels + 1, vertices[1] = lastRow + u1, vertices[2] = lastRow + u;
+  }
+}
+
+WarpSource::WarpSource(const Panorama& panorama, glm::vec3 position, float yawRadians, const WarpOptions& options)
+    : width_(panorama.width()), height_(panorama.height()), position_(position) {
+  TRIWALK_CHECK(width_ >= 2 && height_ >= 2, "panorama too small to warp");
+  const EquirectProjection projection{width_, height_, yawRadians};
+  const size_t pixels = size_t(width_) * size_t(height_);
+  points_.resize(pixels + 2);
+  infinite_.resize(pixels + 2);
+  colors_.resize(pixels + 2);
+  tbb::parallel_for(tbb::blocked_range<int>(0, height_), [&](const tbb::blocked_range<int>& rows) {
+    for (int v = rows.begin(); v != rows.end(); ++v) {
+      for (int u = 0; u < width_; ++u) {
+        const size_t i = size_t(v) * size_t(width_) + size_t(u);
+        const glm::vec3 direction = projection.pixelDirection(u, v);
+        const float d = panorama.distance.pixels[i];
+        infinite_[i] = std::isinf(d);
+        points_[i] = std::isinf(d) ? direction : position + d * direction;
+        colors_[i] = panorama.color.pixels[i];
+      }
+    }
+  });
+
+  // Pole vertices close the caps above the first and below the last row:
+  // the mean of that row's points and colors, at infinity if any is.
+  for (int pole = 0; pole < 2; ++pole) {
+    const int row = pole == 0 ? 0 : height_ - 1;
+    const size_t first = size_t(row) * size_t(width_);
+    bool anyInfinite = false;
+    double distanceSum = 0.0;
+    glm::dvec3 colorSum(0.0);
+    for (int u = 0; u < width_; ++u) {
+      anyInfinite |= infinite_[first + size_t(u)] != 0;
+      distanceSum += anyInfinite ? 0.0 : double(panorama.distance.pixels[first + size_t(u)]);
+      colorSum += glm::dvec3(colors_[first + size_t(u)]);
+    }
+    const glm::vec3 up(0.0f, 0.0f, pole == 0 ? 1.0f : -1.0f);
+    const size_t vertex = pixels + size_t(pole);
+    infinite_[vertex] = anyInfinite;
+    points_[vertex] = anyInfinite ? up : position + float(distanceSum / width_) * up;
+    colors_[vertex] = glm::vec3(colorSum / double(width_));
+  }
+
+  const uint32_t triangles = 2 * uint32_t(width_) * uint32_t(height_ - 1) + 2 * uint32_t(width_);
+  kept_.resize(triangles);
+  const float minimumSine = std::sin(degreesToRadians(options.grazingAngleDegrees));
+  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, triangles, 4096), [&](const tbb::blocked_range<uint32_t>& range) {
+    for (uint32_t t = range.begin(); t != range.end(); ++t) {
+      uint32_t v[3];
+      triangleVertices(t, v);
+      const int infiniteCount = infinite_[v[0]] + infinite_[v[1]] + infinite_[v[2]];
+      bool keep = false;
+      if (infiniteCount == 3) {
+        keep = true;  // sky: a triangle of directions
+      } else if (infiniteCount > 0) {
+        keep = false;  // stretched from a surface to infinity
+      } else {
+        const glm::vec3 a = points_[v[0]], b = points_[v[1]], c = points_[v[2]];
+        switch (options.stretchTest) {
+          case StretchTest::None: keep = true; break;
+          case StretchTest::GrazingAngle: {
+            const glm::vec3 normal = glm::cross(b - a, c - a);
+            const glm::vec3 ray = (a + b + c) / 3.0f - position;
+            const float scale = glm::length(normal) * glm::length(ray);
+            keep = scale > 0.0f && std::abs(glm::dot(normal, ray)) >= minimumSine * scale;
+            break;
+          }
+          case StretchTest::DepthRatio: {
+            const float da = glm::length(a - position), db = glm::length(b - position), dc = glm::length(c - position);
+            keep = std::max({da, db, dc}) <= options.maxDepthRatio * std::min({da, db, dc});
+            break;
+          }
+        }
+      }
+      kept_[t] = keep;
+    }
+  });
+  keptCount_ = uint32_t(std::count(kept_.begin(), kept_.end(), uint8_t(1)));
+
+  orphan_.assign(points_.size(), 1);
+  for (uint32_t t = 0; t < triangles; ++t) {
+    if (!kept_[t]) continue;
+    uint32_t v[3];
+    triangleVertices(t, v);
+    orphan_[v[0]] = orphan_[v[1]] = orphan_[v[2]] = 0;
+  }
+  for (size_t i = 0; i < points_.size(); ++i) orphan_[i] &= uint8_t(!infinite_[i]);
+}
+
+DestinationCamera DestinationCamera::panorama(glm::vec3 position, int width, int height, float yawRadians) {
+  DestinationCamera camera;
+  camera.kind = Kind::Equirect;
+  camera.position = position;
+  camera.equirect = {width, height, yawRadians};
+  return camera;
+}
+
+DestinationCamera DestinationCamera::camera(const PinholeCamera& pinhole) {
+  DestinationCamera camera;
+  camera.kind = Kind::Pinhole;
+  camera.position = pinhole.position;
+  camera.pinhole = pinhole;
+  return camera;
+}
+
+// ------------------------------------------------------------------ warp --
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr uint64_t kEmpty = std::numeric_limits<uint64_t>::max();
+constexpr float kPinholeNear = 0.01f;  // metres
+
+// Z-buffer payload: (triangle << 2) for a triangle, (vertex << 2) | 3 for
+// a splatted point.
+constexpr uint32_t kPointPayload = 3;
+
+// A source vertex as the destination sees it.
+struct ProjectedVertex {
+  glm::dvec3 relative{0.0};   // equirect: vector from the destination (a direction at infinity)
+  glm::vec2 screen{0.0f};     // continuous image coordinates
+  float inverseDistance = 0;  // 1 / metres from the destination, 0 at infinity
+  float depth = 1.0f;         // pinhole: camera-frame depth, for perspective-correct interpolation
+  bool valid = false;
+};
+
+ProjectedVertex projectVertex(const WarpSource& source, uint32_t vertex, const DestinationCamera& destination) {
+  ProjectedVertex projected;
+  const bool infinite = source.atInfinity(vertex);
+  const glm::vec3 point = source.point(vertex);
+  const glm::vec3 relative = infinite ? point : point - destination.position;
+  const float distance = glm::length(relative);
+  if (!(distance > 1e-6f)) return projected;
+  projected.inverseDistance = infinite ? 0.0f : 1.0f / distance;
+  if (destination.kind == DestinationCamera::Kind::Equirect) {
+    projected.relative = glm::dvec3(relative);
+    projected.screen = destination.equirect.imagePoint(relative);
+    projected.valid = true;
+  } else {
+    const glm::vec3 camera = destination.pinhole.toCameraFrame(glm::vec4(point, infinite ? 0.0f : 1.0f));
+    const float near = infinite ? 1e-4f : kPinholeNear;
+    if (!(camera.z > near)) return projected;
+    projected.screen = destination.pinhole.imagePoint(camera);
+    projected.depth = camera.z;
+    projected.valid = true;
+  }
+  return projected;
+}
+
+// Which pixel centres a triangle covers, with the weights that interpolate
+// its vertex attributes there and the inverse distance of the surface.
+struct Coverage {
+  double weights[3];
+  float inverseDistance;
+};
+
+// Panorama destinations: exact coverage on the sphere. A pixel's ray
+// direction w lies in the triangle's cone when the three triple products
+// det(r_i+1, r_i+2, w) share the sign of det(r0, r1, r2); normalized, they
+// are the barycentric weights of the ray's hit on the triangle's plane
+// (perspective-correct), and t = det(r0, r1, r2) / sum is its distance.
+// No seam or pole is special: a triangle across the seam covers columns
+// on both sides, one around a pole covers whole rows. Neighbours share
+// edges exactly (swapping the two vertices negates the cross product), so
+// there are no cracks.
+class SphericalTriangle {
+public:
+  SphericalTriangle(const ProjectedVertex* v[3], bool atInfinity) : atInfinity_(atInfinity) {
+    for (int i = 0; i < 3; ++i) normals_[i] = glm::cross(v[(i + 1) % 3]->relative, v[(i + 2) % 3]->relative);
+    volume_ = glm::dot(v[0]->relative, normals_[0]);
+  }
+
+  bool degenerate() const { return volume_ == 0.0; }
+
+  bool covers(glm::dvec3 direction, Coverage& coverage) const {
+    double sum = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      coverage.weights[i] = glm::dot(normals_[i], direction);
+      if (coverage.weights[i] * volume_ < 0.0) return false;
+      sum += coverage.weights[i];
+    }
+    if (!(sum * volume_ > 0.0)) return false;
+    for (double& w : coverage.weights) w /= sum;
+    coverage.inverseDistance = atInfinity_ ? 0.0f : float(sum / volume_);
+    return true;
+  }
+
+private:
+  glm::dvec3 normals_[3];
+  double volume_ = 0.0;
+  bool atInfinity_;
+};
+
+// Per-column and per-row factors of the destination's pixel directions.
+struct DirectionTable {
+  std::vector<double> cosTheta, sinTheta, cosPhi, sinPhi;
+  std::vector<double> tanLatitude;  // |tan| of the latitude k rows from a pole, k <= H / 2
+  explicit DirectionTable(const EquirectProjection& projection) {
+    for (int u = 0; u < projection.width; ++u) {
+      const glm::vec3 d = projection.pixelDirection(u, projection.height / 2);
+      const double theta = std::atan2(double(d.y), double(d.x));
+      cosTheta.push_back(std::cos(theta));
+      sinTheta.push_back(std::sin(theta));
+    }
+    for (int v = 0; v < projection.height; ++v) {
+      const double phi = 0.5 * std::numbers::pi - std::numbers::pi * (v + 0.5) / projection.height;
+      cosPhi.push_back(std::cos(phi));
+      sinPhi.push_back(std::sin(phi));
+    }
+    for (int k = 0; k <= projection.height / 2; ++k) {
+      tanLatitude.push_back(k == 0 ? 1e30 : 1.0 / std::tan(std::numbers::pi * k / projection.height));
+    }
+  }
+  glm::dvec3 at(int u, int v) const { return {cosPhi[size_t(v)] * cosTheta[size_t(u)], cosPhi[size_t(v)] * sinTheta[size_t(u)], sinPhi[size_t(v)]}; }
+};
+
+// The candidate pixels of a spherical triangle: its rows and columns from
+// the vertices' image points, whole rows when it contains a pole, columns
+// across the seam when it straddles it (iterated modulo the width).
+struct PixelRange {
+  int x0, x1, y0, y1;
+};
+
+PixelRange sphericalRange(const ProjectedVertex* v[3], bool atInfinity, const DirectionTable& directions, int width,
+                          int height) {
+  double xs[3], minY = 1e30, maxY = -1e30;
+  for (int i = 0; i < 3; ++i) {
+    xs[i] = v[i]->screen.x;
+    minY = std::min(minY, double(v[i]->screen.y));
+    maxY = std::max(maxY, double(v[i]->screen.y));
+  }
+  if (std::max({xs[0], xs[1], xs[2]}) - std::min({xs[0], xs[1], xs[2]}) > 0.5 * width) {
+    for (double& x : xs) x += x < 0.5 * width ? width : 0.0;
+  }
+  double minX = std::min({xs[0], xs[1], xs[2]}), maxX = std::max({xs[0], xs[1], xs[2]});
+  // Great-circle edges bulge towards the poles between their vertices:
+  // an edge spanning dtheta of longitude at latitude phi bulges by about
+  // dtheta^2 / 8 * tan(phi). Only where twice that could reach the next
+  // row of pixel centres beyond the vertices (or near a pole) do the rows
+  // come from each edge's exact extreme latitude; a margin of 1/100 pixel
+  // covers the image points' rounding.
+  const double pi = std::numbers::pi;
+  const int rowsFromPole = int(std::min(minY, height - maxY));
+  const double longitudeSpan = (maxX - minX) * 2.0 * pi / width;
+  const double bulgeRows = longitudeSpan * longitudeSpan / 4.0 *
+                           directions.tanLatitude[size_t(std::clamp(rowsFromPole, 0, height / 2))] * height / pi;
+  const double slackAbove = minY - (std::floor(minY - 0.5) + 0.5);  // to the row centre above the vertices
+  const double slackBelow = (std::ceil(maxY - 0.5) + 0.5) - maxY;   // to the row centre below them
+  if (rowsFromPole < 2 || bulgeRows >= std::min(slackAbove, slackBelow) - 0.01) {
+    for (int i = 0; i < 3; ++i) {
+      const glm::dvec3 a = glm::normalize(v[i]->relative), b = glm::normalize(v[(i + 1) % 3]->relative);
+      const glm::dvec3 normal = glm::cross(a, b);
+      const double length = glm::length(normal);
+      if (length < 1e-12) continue;
+      const glm::dvec3 n = normal / length;
+      for (const double pole : {1.0, -1.0}) {
+        // The point of the edge's great circle nearest the pole, if it lies on the edge.
+        const glm::dvec3 toward = glm::dvec3(0.0, 0.0, pole) - pole * n.z * n;
+        if (glm::length(toward) < 1e-12) continue;
+        const glm::dvec3 p = glm::normalize(toward);
+        if (glm::dot(glm::cross(a, p), n) < 0.0 || glm::dot(glm::cross(p, b), n) < 0.0) continue;
+        const double y = (0.5 * pi - std::asin(std::clamp(p.z, -1.0, 1.0))) * height / pi;
+        minY = std::min(minY, y);
+        maxY = std::max(maxY, y);
+      }
+    }
+  }
+  const double margin = 0.01;
+  // Only a triangle whose vertices spread over more than half the
+  // longitudes can contain a pole.
+  if (maxX - minX > 0.5 * width) {
+    const SphericalTriangle triangle(v, atInfinity);
+    Coverage ignored;
+    const bool north = triangle.covers({0.0, 0.0, 1.0}, ignored);
+    const bool south = triangle.covers({0.0, 0.0, -1.0}, ignored);
+    if (north) minY = 0.0;
+    if (south) maxY = height;
+    if (north || south) minX = 0.0, maxX = width;
+  }
+  PixelRange range;
+  range.x0 = int(std::ceil(minX - 0.5 - margin));
+  range.x1 = int(std::floor(maxX - 0.5 + margin));
+  if (range.x1 - range.x0 >= width) range.x0 = 0, range.x1 = width - 1;
+  range.y0 = std::max(0, int(std::ceil(minY - 0.5 - margin)));
+  range.y1 = std::min(height - 1, int(std::floor(maxY - 0.5 + margin)));
+  return range;
+}
+
+// Pinhole destinations: edge functions in the image plane, computed the
+// same way whichever way an edge is directed so that neighbours agree
+// exactly on which side a pixel centre lies (no cracks); attributes are
+// interpolated perspective-correctly, as the GPU does.
+double edgeFunction(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) {
+  const bool swapped = b.x < a.x || (b.x == a.x && b.y < a.y);
+  const glm::dvec2 from = swapped ? b : a, to = swapped ? a : b;
+  const double value = (to.x - from.x) * (p.y - from.y) - (to.y - from.y) * (p.x - from.x);
+  return swapped ? -value : value;
+}
+
+class PlanarTriangle {
+public:
+  explicit PlanarTriangle(const ProjectedVertex* v[3]) : vertices_(v) {
+    for (int i = 0; i < 3; ++i) screen_[i] = glm::dvec2(v[i]->screen);
+    area_ = edgeFunction(screen_[0], screen_[1], screen_[2]);
+  }
+
+  bool degenerate() const { return area_ == 0.0; }
+
+  PixelRange range(int width, int height) const {
+    const double minX = std::min({screen_[0].x, screen_[1].x, screen_[2].x});
+    const double maxX = std::max({screen_[0].x, screen_[1].x, screen_[2].x});
+    const double minY = std::min({screen_[0].y, screen_[1].y, screen_[2].y});
+    const double maxY = std::max({screen_[0].y, screen_[1].y, screen_[2].y});
+    return {std::max(0, int(std::ceil(minX - 0.5))), std::min(width - 1, int(std::floor(maxX - 0.5))),
+            std::max(0, int(std::ceil(minY - 0.5))), std::min(height - 1, int(std::floor(maxY - 0.5)))};
+  }
+
+  bool covers(int x, int y, Coverage& coverage) const {
+    const glm::dvec2 p(x + 0.5, y + 0.5);
+    const double e[3] = {edgeFunction(screen_[1], screen_[2], p), edgeFunction(screen_[2], screen_[0], p),
+                         edgeFunction(screen_[0], screen_[1], p)};
+    double sum = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      if (e[i] * area_ < 0.0) return false;
+      coverage.weights[i] = e[i] / area_ / double(vertices_[i]->depth);
+      sum += coverage.weights[i];
+    }
+    for (double& w : coverage.weights) w /= sum;
+    coverage.inverseDistance = 0.0f;
+    for (int i = 0; i < 3; ++i) coverage.inverseDistance += float(coverage.weights[i]) * vertices_[i]->inverseDistance;
+    return true;
+  }
+
+private:
+  const ProjectedVertex* const* vertices_;
+  glm::dvec2 screen_[3];
+  double area_ = 0.0;
+};
+
+uint64_t makeKey(float distance, uint32_t payload) {
+  return (uint64_t(std::bit_cast<uint32_t>(distance)) << 32) | payload;
+}
+
+void atomicMin(uint64_t& slot, uint64_t key) {
+  std::atomic_ref<uint64_t> atomicSlot(slot);
+  uint64_t current = atomicSlot.load(std::memory_order_relaxed);
+  while (key < current && !atomicSlot.compare_exchange_weak(current, key, std::memory_order_relaxed)) {
+  }
+}
+
+float distanceFromInverse(float inverseDistance) {
+  return inverseDistance > 0.0f ? 1.0f / inverseDistance : std::numeric_limits<float>::infinity();
+}
+
+// Splats a vertex into the destination pixel its position falls in.
+void splatPoint(const ProjectedVertex& p, uint32_t vertex, int width, int height, bool wrap, std::vector<uint64_t>& zBuffer) {
+  if (!p.valid) return;
+  int x = int(std::floor(p.screen.x)), y = int(std::floor(p.screen.y));
+  if (wrap) x = (x % width + width) % width;
+  if (x < 0 || y < 0 || x >= width || y >= height) return;
+  atomicMin(zBuffer[size_t(y) * size_t(width) + size_t(x)],
+            makeKey(distanceFromInverse(p.inverseDistance), (vertex << 2) | kPointPayload));
+}
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+}  // namespace
+
+WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destination, WarpMethod method) {
+  WarpTimings timings;
+  auto stageStart = Clock::now();
+  const int width = destination.width(), height = destination.height();
+  const bool equirect = destination.kind == DestinationCamera::Kind::Equirect;
+  const uint32_t vertexCount = uint32_t(source.width()) * uint32_t(source.height()) + 2;
+  std::vector<ProjectedVertex> projected(vertexCount);
+  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, vertexCount, 4096), [&](const tbb::blocked_range<uint32_t>& r) {
+    for (uint32_t v = r.begin(); v != r.end(); ++v) projected[v] = projectVertex(source, v, destination);
+  });
+  const std::unique_ptr<DirectionTable> directions =
+      equirect ? std::make_unique<DirectionTable>(destination.equirect) : nullptr;
+  timings.projectSeconds = secondsSince(stageStart);
+  stageStart = Clock::now();
+
+  std::vector<uint64_t> zBuffer(size_t(width) * size_t(height), kEmpty);
+  std::atomic<uint64_t> rasterized{0};
+  const uint32_t pointCount = vertexCount - 2;
+
+  // Points: every pixel in the point warp; in the mesh warp, orphans
+  // compete with the triangles and the other vertices only fill gaps.
+  std::vector<uint64_t> gapBuffer(method == WarpMethod::Mesh ? zBuffer.size() : 0, kEmpty);
+  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, pointCount, 4096), [&](const tbb::blocked_range<uint32_t>& r) {
+    for (uint32_t v = r.begin(); v != r.end(); ++v) {
+      const bool competes = method == WarpMethod::Point || source.orphan(v);
+      splatPoint(projected[v], v, width, height, equirect, competes ? zBuffer : gapBuffer);
+    }
+  });
+
+  if (method == WarpMethod::Mesh) {
+    const uint32_t triangleCount = source.triangleCount();
+    TRIWALK_CHECK(triangleCount < (1u << 30), "source too large for the z-buffer payload");
+    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, triangleCount, 2048), [&](const tbb::blocked_range<uint32_t>& r) {
+      uint64_t localRasterized = 0;
+      for (uint32_t t = r.begin(); t != r.end(); ++t) {
+        if (!source.triangleKept(t)) continue;
+        uint32_t indices[3];
+        source.triangleVertices(t, indices);
+        const ProjectedVertex* v[3] = {&projected[indices[0]], &projected[indices[1]], &projected[indices[2]]};
+        if (!v[0]->valid || !v[1]->valid || !v[2]->valid) continue;
+        ++localRasterized;
+        const uint32_t payload = t << 2;
+        Coverage coverage;
+        if (equirect) {
+          // Most triangles are about a pixel large: those whose range holds
+          // no pixel centre are dropped before the exact test is set up.
+          const PixelRange range = sphericalRange(v, source.atInfinity(indices[0]), *directions, width, height);
+          if (range.x0 > range.x1 || range.y0 > range.y1) continue;
+          const SphericalTriangle triangle(v, source.atInfinity(indices[0]));
+          if (triangle.degenerate()) continue;
+          for (int y = range.y0; y <= range.y1; ++y) {
+            for (int column = range.x0; column <= range.x1; ++column) {
+              const int x = (column % width + width) % width;
+              if (!triangle.covers(directions->at(x, y), coverage)) continue;
+              atomicMin(zBuffer[size_t(y) * size_t(width) + size_t(x)],
+                        makeKey(distanceFromInverse(coverage.inverseDistance), payload));
+            }
+          }
+        } else {
+          const PlanarTriangle triangle(v);
+          if (triangle.degenerate()) continue;
+          const PixelRange range = triangle.range(width, height);
+          for (int y = range.y0; y <= range.y1; ++y) {
+            for (int x = range.x0; x <= range.x1; ++x) {
+              if (!triangle.covers(x, y, coverage)) continue;
+              atomicMin(zBuffer[size_t(y) * size_t(width) + size_t(x)],
+                        makeKey(distanceFromInverse(coverage.inverseDistance), payload));
+            }
+          }
+        }
+      }
+      rasterized += localRasterized;
+    });
+  }
+  timings.rasterSeconds = secondsSince(stageStart);
+  stageStart = Clock::now();
+
+  // Resolve: interpolate the winner's attributes at each pixel centre.
+  WarpLayer layer{ColorImage(width, height), ScalarImage(width, height, std::numeric_limits<float>::infinity()),
+                  std::vector<uint8_t>(size_t(width) * size_t(height), 0), rasterized.load(), WarpTimings{}};
+  tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y != rows.end(); ++y) {
+      for (int x = 0; x < width; ++x) {
+        const size_t i = size_t(y) * size_t(width) + size_t(x);
+        const uint64_t key = zBuffer[i] != kEmpty || gapBuffer.empty() ? zBuffer[i] : gapBuffer[i];
+        if (key == kEmpty) continue;
+        const uint32_t payload = uint32_t(key & 0xFFFFFFFFu);
+        layer.covered[i] = 1;
+        layer.distance.pixels[i] = std::bit_cast<float>(uint32_t(key >> 32));
+        if ((payload & 3u) == kPointPayload) {
+          layer.color.pixels[i] = source.color(payload >> 2);
+          continue;
+        }
+        uint32_t indices[3];
+        source.triangleVertices(payload >> 2, indices);
+        const ProjectedVertex* v[3] = {&projected[indices[0]], &projected[indices[1]], &projected[indices[2]]};
+        Coverage coverage;
+        // The same arithmetic as in rasterization, so the winner covers the centre.
+        const bool covered = equirect ? SphericalTriangle(v, source.atInfinity(indices[0])).covers(directions->at(x, y), coverage)
+                                      : PlanarTriangle(v).covers(x, y, coverage);
+        TRIWALK_CHECK(covered, "z-buffer winner does not cover its pixel");
+        glm::vec3 color(0.0f);
+        for (int k = 0; k < 3; ++k) color += float(coverage.weights[k]) * source.color(indices[k]);
+        layer.color.pixels[i] = color;
+      }
+    }
+  });
+  timings.resolveSeconds = secondsSince(stageStart);
+  layer.timings = timings;
+  return layer;
+}
+
+}  // namespace triwalk

@@ -1,0 +1,130 @@
+#pragma once
+// Forward 3D warp of an equirectangular RGB-D panorama into another camera
+// (docs/DESIGN.md, "Warp and blend"). This CPU warp is the reference: decimation
+// costs, evaluation and the GPU renderer's check all rest on it.
+//
+// Mesh warp: every source pixel is the world point p_s + d * omega; the
+// pixels form two triangles per 2x2 quad, wrapping across the source seam,
+// plus a fan at each pole. Triangles spanning a depth discontinuity
+// ("rubber sheets") are dropped by a stretch test. The rest are rasterized
+// into the destination (equirectangular: screen-linear interpolation,
+// triangles crossing the seam split in two; pinhole: perspective-correct)
+// with a z-buffer on destination distance. Points at infinity (sky) warp
+// as directions.
+//
+// Vertices whose triangles were all dropped (thin structures one pixel
+// wide, surfaces seen edge-on) would vanish; the mesh warp splats them as
+// single points that compete in the z-buffer. Every other finite vertex is
+// splatted too, but only into pixels no triangle covered: a pixel centre
+// that falls just outside the kept triangles by rounding (at a silhouette,
+// at the destination's poles) still gets the sample that landed there.
+//
+// Point warp: the paper's literal method, each source pixel splatted into
+// the one destination pixel its centre lands in (leaves cracks).
+//
+// Determinism: the z-buffer keeps, per destination pixel, the minimum of
+// (distance bits, triangle id) with atomic min, which does not depend on
+// the order threads reach it; results are identical for any thread count.
+
+#include "core/geometry/projection.h"
+#include "core/image/image.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace triwalk {
+
+enum class StretchTest {
+  None,
+  GrazingAngle,  // drop triangles seen at less than a threshold angle from the source
+  DepthRatio,    // drop triangles whose farthest/nearest vertex distance exceeds a threshold
+};
+
+enum class WarpMethod { Mesh, Point };
+
+struct WarpOptions {
+  WarpMethod method = WarpMethod::Mesh;
+  StretchTest stretchTest = StretchTest::GrazingAngle;
+  float grazingAngleDegrees = 4.0f;  // GrazingAngle: minimum angle between surface and source ray
+  float maxDepthRatio = 1.15f;       // DepthRatio: maximum farthest / nearest distance
+};
+
+// Parses "none", "grazing-angle", "depth-ratio"; throws InputError.
+StretchTest parseStretchTest(const std::string& name);
+const char* stretchTestName(StretchTest test);
+
+// A source panorama prepared for warping: world points of its pixels and
+// pole vertices, and which triangles survive the stretch test. Depends only
+// on the source, so decimation prepares each sample once.
+class WarpSource {
+public:
+  WarpSource(const Panorama& panorama, glm::vec3 position, float yawRadians, const WarpOptions& options);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  glm::vec3 position() const { return position_; }
+  // Vertex i < W*H is pixel (i % W, i / W); W*H and W*H+1 are the poles.
+  glm::vec3 point(uint32_t vertex) const { return points_[vertex]; }
+  bool atInfinity(uint32_t vertex) const { return infinite_[vertex] != 0; }
+  glm::vec3 color(uint32_t vertex) const { return colors_[vertex]; }
+  // Triangle ids: quads (v * W + u) * 2 + {0, 1} for v < H - 1, then the
+  // top fan (W triangles), then the bottom fan (W triangles).
+  uint32_t triangleCount() const { return uint32_t(kept_.size()); }
+  bool triangleKept(uint32_t triangle) const { return kept_[triangle] != 0; }
+  void triangleVertices(uint32_t triangle, uint32_t vertices[3]) const;
+  uint32_t keptTriangleCount() const { return keptCount_; }
+  // A finite vertex none of whose triangles was kept.
+  bool orphan(uint32_t vertex) const { return orphan_[vertex] != 0; }
+
+private:
+  int width_ = 0;
+  int height_ = 0;
+  glm::vec3 position_{0.0f};
+  std::vector<glm::vec3> points_;   // world point, or unit direction when at infinity
+  std::vector<uint8_t> infinite_;
+  std::vector<glm::vec3> colors_;   // linear
+  std::vector<uint8_t> kept_;
+  std::vector<uint8_t> orphan_;
+  uint32_t keptCount_ = 0;
+};
+
+// A destination camera: an equirectangular panorama at a position, or a
+// pinhole camera.
+struct DestinationCamera {
+  enum class Kind { Equirect, Pinhole };
+  Kind kind = Kind::Equirect;
+  glm::vec3 position{0.0f};
+  EquirectProjection equirect;
+  PinholeCamera pinhole;
+
+  static DestinationCamera panorama(glm::vec3 position, int width, int height, float yawRadians = 0.0f);
+  static DestinationCamera camera(const PinholeCamera& pinhole);
+  int width() const { return kind == Kind::Equirect ? equirect.width : pinhole.width; }
+  int height() const { return kind == Kind::Equirect ? equirect.height : pinhole.height; }
+};
+
+// What one source contributes to the destination.
+// Where a warp's time went (wall clock), for `triwalk bench`.
+struct WarpTimings {
+  double projectSeconds = 0.0;
+  double rasterSeconds = 0.0;
+  double resolveSeconds = 0.0;
+};
+
+struct WarpLayer {
+  ColorImage color;           // linear
+  ScalarImage distance;       // metres from the destination centre; +inf = sky
+  std::vector<uint8_t> covered;  // 1 where the source put something
+  uint64_t trianglesRasterized = 0;
+  WarpTimings timings;
+
+  // The per-pixel view the blend reads (see blendPixelOf).
+  bool coveredAt(size_t pixel) const { return covered[pixel] != 0; }
+  float distanceAt(size_t pixel) const { return distance.pixels[pixel]; }
+  glm::vec3 colorAt(size_t pixel) const { return color.pixels[pixel]; }
+};
+
+WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destination, WarpMethod method);
+
+}  // namespace triwalk

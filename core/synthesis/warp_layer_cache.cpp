@@ -1,0 +1,59 @@
+#include "core/synthesis/warp_layer_cache.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace triwalk {
+
+CompactLayer::CompactLayer(const WarpLayer& layer) : values_(4 * layer.covered.size()) {
+  const Imath::half notCovered(std::numeric_limits<float>::quiet_NaN());
+  for (size_t i = 0; i < layer.covered.size(); ++i) {
+    const glm::vec3 color = layer.color.pixels[i];
+    values_[4 * i + 0] = Imath::half(color.r);
+    values_[4 * i + 1] = Imath::half(color.g);
+    values_[4 * i + 2] = Imath::half(color.b);
+    values_[4 * i + 3] = layer.covered[i] ? Imath::half(layer.distance.pixels[i]) : notCovered;
+  }
+}
+
+size_t WarpLayerCache::bytes() const {
+  std::lock_guard lock(mutex_);
+  return bytes_;
+}
+
+std::shared_ptr<const CompactLayer> WarpLayerCache::get(int source, int destination, const std::function<WarpLayer()>& make) {
+  const Key key = (uint64_t(uint32_t(source)) << 32) | uint32_t(destination);
+  {
+    std::lock_guard lock(mutex_);
+    const auto found = index_.find(key);
+    if (found != index_.end()) {
+      recency_.splice(recency_.begin(), recency_, found->second);
+      ++hits_;
+      return found->second->second;
+    }
+    ++misses_;
+  }
+  auto layer = std::make_shared<const CompactLayer>(make());
+  std::lock_guard lock(mutex_);
+  const auto found = index_.find(key);
+  if (found != index_.end()) return found->second->second;  // another thread made it meanwhile
+  recency_.emplace_front(key, layer);
+  index_[key] = recency_.begin();
+  bytes_ += layer->bytes();
+  while (bytes_ > budgetBytes_ && recency_.size() > 1) {
+    bytes_ -= recency_.back().second->bytes();
+    index_.erase(recency_.back().first);
+    recency_.pop_back();
+  }
+  return layer;
+}
+
+size_t defaultLayerCacheBytes() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGE_SIZE);
+  const size_t physical = pages > 0 && pageSize > 0 ? size_t(pages) * size_t(pageSize) : size_t(4) << 30;
+  return std::clamp(physical / 3, size_t(1) << 30, size_t(16) << 30);
+}
+
+}  // namespace triwalk

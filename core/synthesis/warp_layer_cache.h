@@ -1,0 +1,71 @@
+#pragma once
+// Warped layers of (source sample, destination sample) pairs, kept for
+// reuse. Neighbouring triangles share two vertices and often a
+// destination, and a dense sample is reconstructed from many triangles as
+// decimation proceeds, so most warps are needed again. Layers are kept in
+// half floats (8 bytes a pixel: the capture's own colour precision), least
+// recently used first out once the memory budget is reached. The cache
+// changes speed only, never a result.
+
+#include "core/synthesis/warp.h"
+
+#include <Imath/half.h>
+
+#include <cstdint>
+#include <functional>
+#include <list>
+#include <memory>
+#include <mutex>
+#include <unordered_map>
+
+namespace triwalk {
+
+// A warped layer in half floats: per pixel linear r, g, b and the distance
+// (NaN where the source put nothing, +inf for sky). Read through the same
+// per-pixel view as WarpLayer, for the blend.
+class CompactLayer {
+public:
+  explicit CompactLayer(const WarpLayer& layer);
+
+  bool coveredAt(size_t pixel) const { return !values_[4 * pixel + 3].isNan(); }
+  float distanceAt(size_t pixel) const { return float(values_[4 * pixel + 3]); }
+  glm::vec3 colorAt(size_t pixel) const {
+    const Imath::half* v = &values_[4 * pixel];
+    return {float(v[0]), float(v[1]), float(v[2])};
+  }
+  size_t bytes() const { return values_.size() * sizeof(Imath::half); }
+
+private:
+  std::vector<Imath::half> values_;
+};
+
+class WarpLayerCache {
+public:
+  explicit WarpLayerCache(size_t budgetBytes) : budgetBytes_(budgetBytes) {}
+
+  // The layer of source warped to destination; make() computes it on a
+  // miss (outside the lock, so misses run in parallel).
+  std::shared_ptr<const CompactLayer> get(int source, int destination, const std::function<WarpLayer()>& make);
+
+  uint64_t hits() const { return hits_; }
+  uint64_t misses() const { return misses_; }
+  size_t bytes() const;
+  size_t budgetBytes() const { return budgetBytes_; }
+
+private:
+  using Key = uint64_t;
+  using Entry = std::pair<Key, std::shared_ptr<const CompactLayer>>;
+
+  size_t budgetBytes_;
+  size_t bytes_ = 0;
+  std::list<Entry> recency_;  // most recent first
+  std::unordered_map<Key, std::list<Entry>::iterator> index_;
+  mutable std::mutex mutex_;
+  uint64_t hits_ = 0, misses_ = 0;
+};
+
+// A budget for the cache from the machine's memory: a third of it, at
+// least 1 GiB and at most 16 GiB.
+size_t defaultLayerCacheBytes();
+
+}  // namespace triwalk

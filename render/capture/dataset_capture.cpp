@@ -1,0 +1,182 @@
+#include "render/capture/dataset_capture.h"
+
+#include "core/io/exr_io.h"
+#include "core/support/errors.h"
+#include "core/support/progress.h"
+#include "render/capture/panorama_capturer.h"
+
+#include <cmath>
+#include <cstdio>
+#include <future>
+#include <random>
+
+namespace triwalk {
+
+namespace {
+
+std::string numberedFile(const char* format, int id) {
+  char name[64];
+  std::snprintf(name, sizeof name, format, id);
+  return name;
+}
+
+// Uniform float in [0, 1) from a 32-bit engine, the same on every platform
+// (std::uniform_real_distribution is not).
+float unitRandom(std::mt19937& engine) { return float(engine() >> 8) * (1.0f / 16777216.0f); }
+
+// Replaces an existing data set only after the new one is complete.
+void moveIntoPlace(const std::filesystem::path& staging, const std::filesystem::path& target) {
+  std::error_code error;
+  if (std::filesystem::exists(target)) {
+    const std::filesystem::path old = target.string() + ".old-triwalk";
+    std::filesystem::remove_all(old, error);
+    std::filesystem::rename(target, old, error);
+    if (error) throw InputError(target.string(), "cannot replace the existing data set: " + error.message());
+    std::filesystem::rename(staging, target, error);
+    if (error) throw InputError(target.string(), "cannot move the new data set into place: " + error.message());
+    std::filesystem::remove_all(old, error);
+  } else {
+    std::filesystem::rename(staging, target, error);
+    if (error) throw InputError(target.string(), "cannot move the new data set into place: " + error.message());
+  }
+}
+
+}  // namespace
+
+CapturePlan planCapture(const Scene& scene, const CaptureOptions& options) {
+  CapturePlan plan;
+  const WalkableArea& walkable = scene.walkableArea;
+  plan.area = options.area.value_or(glm::vec4(walkable.min, walkable.max));
+  plan.eyeZ = walkable.floorHeight + options.eyeHeight.value_or(walkable.eyeHeight);
+  const glm::vec2 lower(plan.area.x, plan.area.y), upper(plan.area.z, plan.area.w);
+  const glm::vec2 size = upper - lower;
+  if (!(size.x > 0.0f && size.y > 0.0f)) throw InputError("--area", "x1 must exceed x0 and y1 must exceed y0");
+  if (options.width < 16 || options.width % 2 != 0) throw InputError("--width", "must be an even number >= 16");
+  if (options.probes < 0) throw InputError("--probes", "must not be negative");
+
+  // Paths are parallel to the shorter side and spread along the longer.
+  const bool pathsAlongY = size.y <= size.x;
+  const float longSide = pathsAlongY ? size.x : size.y;
+  const float shortSide = pathsAlongY ? size.y : size.x;
+  if (options.spacing) {
+    if (!(*options.spacing > 0.0f)) throw InputError("--spacing", "must be positive");
+    plan.paths = int(std::floor(longSide / *options.spacing + 1e-4f)) + 1;
+    plan.perPath = int(std::floor(shortSide / *options.spacing + 1e-4f)) + 1;
+  } else {
+    plan.paths = options.paths;
+    plan.perPath = options.perPath;
+  }
+  if (plan.paths < 2 || plan.perPath < 2) {
+    throw InputError("--paths/--per-path", "need at least 2 paths of 2 samples to form triangles");
+  }
+  const float pathStep = options.spacing ? *options.spacing : longSide / float(plan.paths - 1);
+  const float sampleStep = options.spacing ? *options.spacing : shortSide / float(plan.perPath - 1);
+  // Centre the grid when a spacing leaves a margin.
+  const float pathOffset = 0.5f * (longSide - pathStep * float(plan.paths - 1));
+  const float sampleOffset = 0.5f * (shortSide - sampleStep * float(plan.perPath - 1));
+
+  for (int path = 0; path < plan.paths; ++path) {
+    for (int step = 0; step < plan.perPath; ++step) {
+      const float along = pathOffset + pathStep * float(path);
+      const float across = sampleOffset + sampleStep * float(step);
+      const glm::vec2 xy = pathsAlongY ? lower + glm::vec2(along, across) : lower + glm::vec2(across, along);
+      ViewRecord sample;
+      sample.id = int(plan.samples.size());
+      sample.file = numberedFile("samples/s%04d.exr", sample.id);
+      sample.position = glm::vec3(xy, plan.eyeZ);
+      sample.path = path;
+      sample.step = step;
+      plan.samples.push_back(sample);
+    }
+  }
+
+  // Probes: uniform in the sampled rectangle, never on top of a sample.
+  std::mt19937 engine(options.seed);
+  const float minimumSeparation = 0.05f * std::min(pathStep, sampleStep);
+  while (int(plan.probes.size()) < options.probes) {
+    const glm::vec2 xy = lower + glm::vec2(unitRandom(engine), unitRandom(engine)) * size;
+    bool onSample = false;
+    for (const ViewRecord& sample : plan.samples) {
+      onSample |= glm::length(glm::vec2(sample.position) - xy) < minimumSeparation;
+    }
+    if (onSample) continue;
+    ViewRecord probe;
+    probe.id = int(plan.probes.size());
+    probe.file = numberedFile("probes/p%04d.exr", probe.id);
+    probe.position = glm::vec3(xy, plan.eyeZ);
+    plan.probes.push_back(probe);
+  }
+  return plan;
+}
+
+CaptureSummary captureDataset(const Scene& scene, const std::string& sceneName, const CaptureOptions& options,
+                              const std::filesystem::path& outDirectory) {
+  const CapturePlan plan = planCapture(scene, options);
+  if (std::filesystem::exists(outDirectory) && !std::filesystem::is_empty(outDirectory) &&
+      !std::filesystem::exists(outDirectory / kManifestFileName)) {
+    throw InputError(outDirectory.string(), "exists and is not a triwalk data set; refusing to overwrite it");
+  }
+  const std::filesystem::path staging = outDirectory.string() + ".partial-triwalk";
+  std::error_code error;
+  std::filesystem::remove_all(staging, error);
+  std::filesystem::create_directories(staging / "samples", error);
+  std::filesystem::create_directories(staging / "probes", error);
+  if (error) throw InputError(staging.string(), "cannot create directory: " + error.message());
+
+  CaptureSummary summary;
+  try {
+    InterruptScope interruptScope;
+    PanoramaCapturer capturer(scene, options.width, options.faceSize);
+    summary.sceneTriangles = capturer.sceneTriangles();
+    std::vector<const ViewRecord*> views;
+    for (const ViewRecord& view : plan.samples) views.push_back(&view);
+    for (const ViewRecord& view : plan.probes) views.push_back(&view);
+
+    ProgressReporter progress("capture", views.size(), options.quiet);
+    // The OpenEXR write of one view overlaps the rendering of the next.
+    std::future<void> pendingWrite;
+    int closeWarnings = 0;
+    for (const ViewRecord* view : views) {
+      throwIfInterrupted();
+      Panorama panorama = capturer.capture(view->position);
+      size_t tooClose = 0;
+      for (float d : panorama.distance.pixels) tooClose += d < 0.05f;
+      if (tooClose > panorama.distance.pixelCount() / 100 && closeWarnings++ < 5 && !options.quiet) {
+        std::fprintf(stderr, "\ntriwalk: warning: view %s at (%.2f, %.2f, %.2f) is within 5 cm of geometry in %zu pixels "
+                     "(inside an object?)\n",
+                     view->file.c_str(), view->position.x, view->position.y, view->position.z, tooClose);
+      }
+      if (pendingWrite.valid()) pendingWrite.get();
+      pendingWrite = std::async(std::launch::async, [path = staging / view->file, panorama = std::move(panorama)] {
+        writePanoramaExr(path, panorama);
+      });
+      progress.advance();
+    }
+    if (pendingWrite.valid()) pendingWrite.get();
+    progress.finish();
+    summary.seconds = progress.elapsedSeconds();
+
+    Manifest manifest;
+    manifest.scene = sceneName;
+    manifest.width = options.width;
+    manifest.height = options.width / 2;
+    manifest.samples = plan.samples;
+    manifest.probes = plan.probes;
+    manifest.capture = {{"paths", plan.paths},
+                        {"per_path", plan.perPath},
+                        {"area", {plan.area.x, plan.area.y, plan.area.z, plan.area.w}},
+                        {"eye_z", plan.eyeZ},
+                        {"face_size", options.faceSize > 0 ? options.faceSize : defaultCubeFaceSize(options.width)},
+                        {"probe_seed", options.seed}};
+    writeManifest(staging, manifest);
+    moveIntoPlace(staging, outDirectory);
+  } catch (...) {
+    std::filesystem::remove_all(staging, error);
+    throw;
+  }
+  summary.samples = int(plan.samples.size());
+  summary.probes = int(plan.probes.size());
+  return summary;
+}
+
+}  // namespace triwalk

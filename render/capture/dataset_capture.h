@@ -1,0 +1,54 @@
+#pragma once
+// Capture of a data set: the dense samples on parallel paths across the
+// walkable area (as the paper's 30 paths x 15 images) and held-out probes
+// at random positions inside it, rendered headless and written as
+// manifest.json + one OpenEXR per view.
+
+#include "core/io/dataset.h"
+#include "render/scene/scene.h"
+
+#include <filesystem>
+#include <optional>
+
+namespace triwalk {
+
+struct CaptureOptions {
+  int paths = 30;            // parallel paths, spread along the area's longer side
+  int perPath = 15;          // samples per path, along the shorter side
+  std::optional<float> spacing;  // metres; if set, derives paths and perPath from the area
+  std::optional<glm::vec4> area;  // x0, y0, x1, y1; default: the scene's walkable area
+  std::optional<float> eyeHeight;  // metres above the floor; default: the scene's
+  int width = 1024;          // panorama width; height = width / 2
+  int faceSize = 0;          // cube face resolution, 0 = defaultCubeFaceSize(width)
+  int probes = 20;
+  unsigned seed = 1;
+  bool quiet = false;
+};
+
+struct CapturePlan {
+  std::vector<ViewRecord> samples;
+  std::vector<ViewRecord> probes;
+  int paths = 0;
+  int perPath = 0;
+  glm::vec4 area{0.0f};
+  float eyeZ = 0.0f;
+};
+
+// Positions and file names of every view; validates the options.
+CapturePlan planCapture(const Scene& scene, const CaptureOptions& options);
+
+struct CaptureSummary {
+  int samples = 0;
+  int probes = 0;
+  double seconds = 0.0;
+  std::string glDescription;
+  size_t sceneTriangles = 0;
+};
+
+// Renders and writes the data set into outDirectory (staged beside it and
+// renamed into place, so an interrupted capture leaves nothing behind).
+// Needs a current GL context.
+CaptureSummary captureDataset(const Scene& scene, const std::string& sceneName, const CaptureOptions& options,
+                              const std::filesystem::path& outDirectory);
+
+}  // namespace triwalk

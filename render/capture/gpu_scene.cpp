@@ -1,0 +1,104 @@
+#include "render/capture/gpu_scene.h"
+
+#include "render/gl/shader_program.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace triwalk {
+
+namespace {
+
+GlTexture uploadTexture(const SceneTexture& texture) {
+  GlTexture name = createTexture(GL_TEXTURE_2D);
+  const int levels = 1 + int(std::floor(std::log2(float(std::max(texture.width, texture.height)))));
+  glTextureStorage2D(name.get(), levels, GL_SRGB8_ALPHA8, texture.width, texture.height);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(name.get(), 0, 0, 0, texture.width, texture.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                      texture.rgba.data());
+  glGenerateTextureMipmap(name.get());
+  glTextureParameteri(name.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(name.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(name.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(name.get(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+  // Trilinear only: llvmpipe's anisotropic filtering (Mesa 22.3) took 80 s
+  // for a single cube face at some viewpoints. The capture's 2x2
+  // supersampling provides the anti-aliasing instead.
+  return name;
+}
+
+}  // namespace
+
+GpuScene::GpuScene(const Scene& scene) : materials_(scene.materials) {
+  for (const SceneTexture& texture : scene.textures) textures_.push_back(uploadTexture(texture));
+
+  std::vector<SceneVertex> vertices;
+  std::vector<uint32_t> indices;
+  for (const SceneMesh& mesh : scene.meshes) {
+    const uint32_t base = uint32_t(vertices.size());
+    ranges_.push_back({mesh.material, indices.size(), GLsizei(mesh.indices.size())});
+    vertices.insert(vertices.end(), mesh.vertices.begin(), mesh.vertices.end());
+    for (uint32_t index : mesh.indices) indices.push_back(base + index);
+  }
+  triangleCount_ = indices.size() / 3;
+  // Group draws by material so texture binds are few.
+  std::stable_sort(ranges_.begin(), ranges_.end(),
+                   [](const DrawRange& a, const DrawRange& b) { return a.material < b.material; });
+
+  vertices_ = createBuffer();
+  glNamedBufferStorage(vertices_.get(), GLsizeiptr(std::max<size_t>(1, vertices.size()) * sizeof(SceneVertex)),
+                       vertices.empty() ? nullptr : vertices.data(), 0);
+  indices_ = createBuffer();
+  glNamedBufferStorage(indices_.get(), GLsizeiptr(std::max<size_t>(1, indices.size()) * sizeof(uint32_t)),
+                       indices.empty() ? nullptr : indices.data(), 0);
+
+  vertexArray_ = createVertexArray();
+  const GLuint vao = vertexArray_.get();
+  glVertexArrayVertexBuffer(vao, 0, vertices_.get(), 0, sizeof(SceneVertex));
+  glVertexArrayElementBuffer(vao, indices_.get());
+  struct Attribute {
+    GLuint location;
+    GLint components;
+    size_t offset;
+  };
+  const Attribute attributes[] = {{0, 3, offsetof(SceneVertex, position)},
+                                  {1, 3, offsetof(SceneVertex, normal)},
+                                  {2, 2, offsetof(SceneVertex, uv)},
+                                  {3, 2, offsetof(SceneVertex, lightmapUv)},
+                                  {4, 4, offsetof(SceneVertex, color)}};
+  for (const Attribute& attribute : attributes) {
+    glEnableVertexArrayAttrib(vao, attribute.location);
+    glVertexArrayAttribFormat(vao, attribute.location, attribute.components, GL_FLOAT, GL_FALSE,
+                              GLuint(attribute.offset));
+    glVertexArrayAttribBinding(vao, attribute.location, 0);
+  }
+}
+
+void GpuScene::draw(ShaderProgram& program) const {
+  glBindVertexArray(vertexArray_.get());
+  program.set("diffuseTexture", 0);
+  program.set("lightmapTexture", 1);
+  int boundMaterial = -1;
+  for (const DrawRange& range : ranges_) {
+    if (range.material != boundMaterial) {
+      const SceneMaterial& material = materials_[size_t(range.material)];
+      program.set("baseColor", material.baseColor);
+      program.set("hasDiffuse", material.diffuseTexture >= 0 ? 1 : 0);
+      program.set("hasLightmap", material.lightmapTexture >= 0 ? 1 : 0);
+      program.set("lightmapScale", material.lightmapScale);
+      program.set("useVertexColor", material.useVertexColor ? 1 : 0);
+      program.set("alphaTest", material.alphaTest ? 1 : 0);
+      program.set("specularStrength", material.specular);
+      program.set("shininess", material.shininess);
+      if (material.diffuseTexture >= 0) glBindTextureUnit(0, textures_[size_t(material.diffuseTexture)].get());
+      if (material.lightmapTexture >= 0) glBindTextureUnit(1, textures_[size_t(material.lightmapTexture)].get());
+      boundMaterial = range.material;
+    }
+    glDrawElements(GL_TRIANGLES, range.indexCount, GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(range.firstIndex * sizeof(uint32_t)));
+  }
+  glBindVertexArray(0);
+}
+
+}  // namespace triwalk

@@ -1,0 +1,188 @@
+#include "render/capture/panorama_capturer.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+
+namespace triwalk {
+
+namespace {
+
+constexpr int kMaxLights = 16;  // shaders/scene.frag
+constexpr float kNearPlane = 0.01f;  // metres
+
+// The orientation OpenGL expects for each cube face when it is rendered
+// through a framebuffer and then sampled by direction.
+struct FaceView {
+  glm::vec3 forward, up;
+};
+constexpr FaceView kFaceViews[6] = {{{1, 0, 0}, {0, -1, 0}},  {{-1, 0, 0}, {0, -1, 0}}, {{0, 1, 0}, {0, 0, 1}},
+                                    {{0, -1, 0}, {0, 0, -1}}, {{0, 0, 1}, {0, -1, 0}},  {{0, 0, -1}, {0, -1, 0}}};
+
+// 90-degree square frustum with reversed depth and no far plane: depth is
+// near / view distance, 1 at the near plane, 0 at infinity.
+glm::mat4 cubeFaceProjection() {
+  glm::mat4 projection(0.0f);
+  projection[0][0] = 1.0f;
+  projection[1][1] = 1.0f;
+  projection[2][3] = -1.0f;
+  projection[3][2] = kNearPlane;
+  return projection;
+}
+
+void setNearestClamp(const GlTexture& texture) {
+  glTextureParameteri(texture.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+void setSkyUniforms(ShaderProgram& program, const SkyModel& sky) {
+  program.set("skyZenith", sky.zenith);
+  program.set("skyHorizon", sky.horizon);
+  program.set("skyGround", sky.ground);
+  program.set("skySunDirection", sky.sunDirection);
+  program.set("skySunColor", sky.sunColor);
+}
+
+}  // namespace
+
+int defaultCubeFaceSize(int width) { return std::max(16, (width * 3 / 8 + 7) / 8 * 8); }
+
+PanoramaCapturer::PanoramaCapturer(const Scene& scene, int width, int faceSize)
+    : scene_(scene), width_(width), faceSize_(faceSize > 0 ? faceSize : defaultCubeFaceSize(width)), gpuScene_(scene),
+      sceneProgram_("scene.vert", "scene.frag"), skyProgram_("fullscreen.vert", "capture_sky.frag"),
+      equirectProgram_("fullscreen.vert", "capture_equirect.frag") {
+  colorCube_ = createTexture(GL_TEXTURE_CUBE_MAP);
+  glTextureStorage2D(colorCube_.get(), 1, GL_RGBA16F, faceSize_, faceSize_);
+  glTextureParameteri(colorCube_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(colorCube_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  planeCube_ = createTexture(GL_TEXTURE_CUBE_MAP);
+  glTextureStorage2D(planeCube_.get(), 1, GL_RGBA32F, faceSize_, faceSize_);
+  setNearestClamp(planeCube_);
+  distanceCube_ = createTexture(GL_TEXTURE_CUBE_MAP);
+  glTextureStorage2D(distanceCube_.get(), 1, GL_R32F, faceSize_, faceSize_);
+  setNearestClamp(distanceCube_);
+  depth_ = createTexture(GL_TEXTURE_CUBE_MAP);
+  glTextureStorage2D(depth_.get(), 1, GL_DEPTH_COMPONENT32F, faceSize_, faceSize_);
+
+  const GLenum drawBuffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  for (int face = 0; face < 6; ++face) {
+    GlFramebuffer& framebuffer = faceFramebuffers_[size_t(face)];
+    framebuffer = createFramebuffer();
+    glNamedFramebufferTextureLayer(framebuffer.get(), GL_COLOR_ATTACHMENT0, colorCube_.get(), 0, face);
+    glNamedFramebufferTextureLayer(framebuffer.get(), GL_COLOR_ATTACHMENT1, planeCube_.get(), 0, face);
+    glNamedFramebufferTextureLayer(framebuffer.get(), GL_COLOR_ATTACHMENT2, distanceCube_.get(), 0, face);
+    glNamedFramebufferTextureLayer(framebuffer.get(), GL_DEPTH_ATTACHMENT, depth_.get(), 0, face);
+    glNamedFramebufferDrawBuffers(framebuffer.get(), 3, drawBuffers);
+    requireCompleteFramebuffer(framebuffer, "capture cube face");
+  }
+
+  panoramaColor_ = createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(panoramaColor_.get(), 1, GL_RGBA32F, width_, height());
+  panoramaDistance_ = createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(panoramaDistance_.get(), 1, GL_R32F, width_, height());
+  panoramaFramebuffer_ = createFramebuffer();
+  glNamedFramebufferTexture(panoramaFramebuffer_.get(), GL_COLOR_ATTACHMENT0, panoramaColor_.get(), 0);
+  glNamedFramebufferTexture(panoramaFramebuffer_.get(), GL_COLOR_ATTACHMENT1, panoramaDistance_.get(), 0);
+  glNamedFramebufferDrawBuffers(panoramaFramebuffer_.get(), 2, drawBuffers);
+  requireCompleteFramebuffer(panoramaFramebuffer_, "capture panorama");
+
+  emptyVertexArray_ = createVertexArray();
+  linearSampler_ = createSampler(GL_LINEAR);
+}
+
+void PanoramaCapturer::renderCubeFaces(glm::vec3 position) {
+  const glm::mat4 projection = cubeFaceProjection();
+  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  glViewport(0, 0, faceSize_, faceSize_);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+
+  const int lightCount = std::min<int>(kMaxLights, int(scene_.lights.size()));
+  std::vector<glm::vec3> lightPositions, lightColors;
+  std::vector<float> lightRanges;
+  for (int i = 0; i < lightCount; ++i) {
+    lightPositions.push_back(scene_.lights[size_t(i)].position - position);
+    lightColors.push_back(scene_.lights[size_t(i)].color);
+    lightRanges.push_back(scene_.lights[size_t(i)].range);
+  }
+
+  for (int face = 0; face < 6; ++face) {
+    const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), kFaceViews[face].forward, kFaceViews[face].up);
+    const glm::mat4 viewProjection = projection * view;
+    glBindFramebuffer(GL_FRAMEBUFFER, faceFramebuffers_[size_t(face)].get());
+
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_GREATER);
+    glClearDepth(0.0);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    sceneProgram_.use();
+    sceneProgram_.set("viewProjection", viewProjection);
+    sceneProgram_.set("eye", position);
+    sceneProgram_.set("ambient", scene_.ambient);
+    sceneProgram_.set("lightCount", lightCount);
+    if (lightCount > 0) {
+      sceneProgram_.setArray("lightPositions", lightPositions.data(), lightCount);
+      sceneProgram_.setArray("lightColors", lightColors.data(), lightCount);
+      sceneProgram_.setArray("lightRanges", lightRanges.data(), lightCount);
+    }
+    gpuScene_.draw(sceneProgram_);
+
+    // Sky last, at depth 0 (infinity), only where no surface was drawn:
+    // the depth test rejects covered pixels before they are shaded.
+    glDepthFunc(GL_EQUAL);
+    glDepthMask(GL_FALSE);
+    skyProgram_.use();
+    skyProgram_.set("inverseViewProjection", glm::inverse(viewProjection));
+    setSkyUniforms(skyProgram_, scene_.sky);
+    glBindVertexArray(emptyVertexArray_.get());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDepthMask(GL_TRUE);
+  }
+  glDepthFunc(GL_LESS);
+  glDisable(GL_DEPTH_TEST);
+  glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+}
+
+void PanoramaCapturer::resampleToPanorama() {
+  glBindFramebuffer(GL_FRAMEBUFFER, panoramaFramebuffer_.get());
+  glViewport(0, 0, width_, height());
+  glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+  equirectProgram_.use();
+  equirectProgram_.set("colorCube", 0);
+  equirectProgram_.set("planeCube", 1);
+  equirectProgram_.set("distanceCube", 2);
+  equirectProgram_.set("distanceCubeLinear", 3);
+  equirectProgram_.set("panoramaSize", glm::vec2(float(width_), float(height())));
+  glBindTextureUnit(0, colorCube_.get());
+  glBindTextureUnit(1, planeCube_.get());
+  glBindTextureUnit(2, distanceCube_.get());
+  glBindTextureUnit(3, distanceCube_.get());
+  glBindSampler(3, linearSampler_.get());
+  glBindVertexArray(emptyVertexArray_.get());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindSampler(3, 0);
+}
+
+Panorama PanoramaCapturer::capture(glm::vec3 position) {
+  renderCubeFaces(position);
+  resampleToPanorama();
+
+  // Framebuffer row 0 holds panorama row v = 0 (the pass maps it so), so
+  // the read-back is already top-down.
+  Panorama panorama{ColorImage(width_, height()), ScalarImage(width_, height())};
+  std::vector<glm::vec4> rgba(panorama.color.pixelCount());
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, panoramaFramebuffer_.get());
+  glNamedFramebufferReadBuffer(panoramaFramebuffer_.get(), GL_COLOR_ATTACHMENT0);
+  glReadPixels(0, 0, width_, height(), GL_RGBA, GL_FLOAT, rgba.data());
+  glNamedFramebufferReadBuffer(panoramaFramebuffer_.get(), GL_COLOR_ATTACHMENT1);
+  glReadPixels(0, 0, width_, height(), GL_RED, GL_FLOAT, panorama.distance.pixels.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  for (size_t i = 0; i < rgba.size(); ++i) panorama.color.pixels[i] = glm::max(glm::vec3(rgba[i]), 0.0f);
+  return panorama;
+}
+
+}  // namespace triwalk

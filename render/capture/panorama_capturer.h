@@ -1,0 +1,56 @@
+#pragma once
+// Renders equirectangular RGB-D panoramas of a scene with OpenGL: six
+// 90-degree cube faces (shaded color, the plane of each fragment's
+// triangle, its distance), then a resampling pass into the panorama whose
+// distance is the exact ray-plane intersection along each pixel's
+// direction (the Euclidean distance docs/DESIGN.md asks for, not z-buffer depth).
+// Needs a current GL 4.5 context.
+
+#include "core/image/image.h"
+#include "render/capture/gpu_scene.h"
+#include "render/gl/gl_objects.h"
+#include "render/gl/shader_program.h"
+#include "render/scene/scene.h"
+
+#include <array>
+#include <memory>
+
+namespace triwalk {
+
+// A face texel at the face centre spans 2 / faceSize radians, a panorama
+// pixel at the equator 2 pi / width: 3/8 of the width gives 1.2 texels per
+// pixel at the centre and more towards the edges; the resampling pass
+// takes 2x2 samples per pixel on top of that.
+int defaultCubeFaceSize(int width);
+
+class PanoramaCapturer {
+public:
+  // faceSize 0 picks defaultCubeFaceSize(width).
+  PanoramaCapturer(const Scene& scene, int width, int faceSize = 0);
+
+  Panorama capture(glm::vec3 position);
+
+  int width() const { return width_; }
+  int height() const { return width_ / 2; }
+  size_t sceneTriangles() const { return gpuScene_.triangleCount(); }
+
+private:
+  void renderCubeFaces(glm::vec3 position);
+  void resampleToPanorama();
+
+  const Scene& scene_;
+  int width_;
+  int faceSize_;
+  GpuScene gpuScene_;
+  ShaderProgram sceneProgram_;
+  ShaderProgram skyProgram_;
+  ShaderProgram equirectProgram_;
+  GlTexture colorCube_, planeCube_, distanceCube_, depth_;
+  std::array<GlFramebuffer, 6> faceFramebuffers_;
+  GlTexture panoramaColor_, panoramaDistance_;
+  GlFramebuffer panoramaFramebuffer_;
+  GlVertexArray emptyVertexArray_;
+  GlSampler linearSampler_;
+};
+
+}  // namespace triwalk

@@ -1,0 +1,116 @@
+#include "render/walkthrough/gpu_panorama.h"
+
+#include <glm/gtc/packing.hpp>
+
+#include <algorithm>
+#include <limits>
+
+namespace triwalk {
+
+namespace {
+
+constexpr int kTileSize = 32;  // pixels per tile side
+
+void grow(glm::vec3& lower, glm::vec3& upper, bool& any, glm::vec3 p) {
+  lower = any ? glm::min(lower, p) : p;
+  upper = any ? glm::max(upper, p) : p;
+  any = true;
+}
+
+}  // namespace
+
+size_t PreparedPanorama::bytes() const {
+  return colorHalf.size() * sizeof(uint16_t) + distance.size() * sizeof(float) +
+         (triangleIndices.size() + orphanIndices.size()) * sizeof(uint32_t);
+}
+
+PreparedPanorama preparePanorama(const Panorama& panorama, glm::vec3 position, float yawRadians, const WarpOptions& options) {
+  PreparedPanorama prepared;
+  prepared.width = panorama.width();
+  prepared.height = panorama.height();
+  prepared.position = position;
+  prepared.yaw = yawRadians;
+  const int width = prepared.width, height = prepared.height;
+  // The mesh decisions (stretch test, orphans, poles) come from the CPU
+  // reference itself, so both paths warp the same triangles.
+  const WarpSource source(panorama, position, yawRadians, options);
+  const size_t pixels = size_t(width) * size_t(height);
+
+  prepared.colorHalf.resize(pixels * 4);
+  for (size_t i = 0; i < pixels; ++i) {
+    const glm::vec3 c = panorama.color.pixels[i];
+    prepared.colorHalf[4 * i + 0] = glm::packHalf1x16(c.r);
+    prepared.colorHalf[4 * i + 1] = glm::packHalf1x16(c.g);
+    prepared.colorHalf[4 * i + 2] = glm::packHalf1x16(c.b);
+    prepared.colorHalf[4 * i + 3] = glm::packHalf1x16(1.0f);
+  }
+  prepared.distance = panorama.distance.pixels;
+  for (int pole = 0; pole < 2; ++pole) {
+    const uint32_t vertex = uint32_t(pixels) + uint32_t(pole);
+    prepared.poleColors[pole] = source.color(vertex);
+    prepared.poleDistances[pole] = source.atInfinity(vertex) ? std::numeric_limits<float>::infinity()
+                                                             : glm::length(source.point(vertex) - position);
+  }
+
+  // Kept triangles by tile: quads by their top-left pixel, then one tile
+  // for each pole fan.
+  const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height - 1 + kTileSize - 1) / kTileSize;
+  std::vector<std::vector<uint32_t>> tileIndices(size_t(tilesX * tilesY + 2));
+  const uint32_t quadTriangles = 2 * uint32_t(width) * uint32_t(height - 1);
+  for (uint32_t t = 0; t < source.triangleCount(); ++t) {
+    if (!source.triangleKept(t)) continue;
+    size_t tile;
+    if (t < quadTriangles) {
+      const uint32_t quad = t / 2;
+      tile = size_t(int(quad / uint32_t(width)) / kTileSize * tilesX + int(quad % uint32_t(width)) / kTileSize);
+    } else {
+      tile = size_t(tilesX * tilesY) + ((t - quadTriangles) < uint32_t(width) ? 0 : 1);
+    }
+    uint32_t v[3];
+    source.triangleVertices(t, v);
+    tileIndices[tile].insert(tileIndices[tile].end(), v, v + 3);
+  }
+  for (const std::vector<uint32_t>& list : tileIndices) {
+    if (list.empty()) continue;
+    PanoramaTile tile;
+    tile.firstIndex = prepared.triangleIndices.size();
+    tile.indexCount = GLsizei(list.size());
+    for (uint32_t vertex : list) {
+      if (source.atInfinity(vertex)) {
+        grow(tile.directionLower, tile.directionUpper, tile.hasInfinite, source.point(vertex));
+      } else {
+        grow(tile.lower, tile.upper, tile.hasFinite, source.point(vertex));
+      }
+    }
+    prepared.triangleIndices.insert(prepared.triangleIndices.end(), list.begin(), list.end());
+    prepared.tiles.push_back(tile);
+  }
+  for (uint32_t v = 0; v < uint32_t(pixels); ++v) {
+    if (source.orphan(v)) prepared.orphanIndices.push_back(v);
+  }
+  return prepared;
+}
+
+GpuPanorama::GpuPanorama(const PreparedPanorama& prepared)
+    : width_(prepared.width), height_(prepared.height), position_(prepared.position), yaw_(prepared.yaw),
+      orphanCount_(GLsizei(prepared.orphanIndices.size())), tiles_(prepared.tiles),
+      poleDistances_(prepared.poleDistances), poleColors_{prepared.poleColors[0], prepared.poleColors[1]},
+      bytes_(prepared.bytes()) {
+  color_ = createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(color_.get(), 1, GL_RGBA16F, width_, height_);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTextureSubImage2D(color_.get(), 0, 0, 0, width_, height_, GL_RGBA, GL_HALF_FLOAT, prepared.colorHalf.data());
+  distance_ = createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(distance_.get(), 1, GL_R32F, width_, height_);
+  glTextureSubImage2D(distance_.get(), 0, 0, 0, width_, height_, GL_RED, GL_FLOAT, prepared.distance.data());
+  auto upload = [](const std::vector<uint32_t>& values) {
+    GlBuffer buffer = createBuffer();
+    glNamedBufferStorage(buffer.get(), GLsizeiptr(std::max<size_t>(1, values.size()) * sizeof(uint32_t)),
+                         values.empty() ? nullptr : values.data(), 0);
+    return buffer;
+  };
+  triangles_ = upload(prepared.triangleIndices);
+  orphans_ = upload(prepared.orphanIndices);
+}
+
+}  // namespace triwalk

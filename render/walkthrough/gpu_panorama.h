@@ -1,0 +1,77 @@
+#pragma once
+// One reference panorama on the GPU, ready for the warp: color (RGBA16F)
+// and distance (R32F) textures, and the warp mesh of the CPU reference
+// (core/synthesis/warp.h) as index buffers: the triangles that survive the stretch
+// test, grouped in tiles of 32 x 32 pixels so that tiles outside the view
+// are never drawn, plus the orphan vertices drawn as points. Vertex
+// positions are not stored: the vertex shader displaces the grid by the
+// distance texture (gl_VertexID is the pixel index).
+//
+// Preparing (decoding, the stretch test, tiling) is CPU work that a loader
+// thread does (PreparedPanorama); uploading it is the GL thread's.
+
+#include "core/synthesis/warp.h"
+#include "render/gl/gl_objects.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace triwalk {
+
+struct PanoramaTile {
+  GLsizei indexCount = 0;
+  size_t firstIndex = 0;
+  glm::vec3 lower{0.0f}, upper{0.0f};                    // bounds of its finite points
+  glm::vec3 directionLower{0.0f}, directionUpper{0.0f};  // bounds of its directions at infinity
+  bool hasFinite = false, hasInfinite = false;
+};
+
+struct PreparedPanorama {
+  int width = 0, height = 0;
+  glm::vec3 position{0.0f};
+  float yaw = 0.0f;
+  std::vector<uint16_t> colorHalf;  // RGBA, half floats
+  std::vector<float> distance;
+  std::vector<uint32_t> triangleIndices;
+  std::vector<PanoramaTile> tiles;
+  std::vector<uint32_t> orphanIndices;
+  glm::vec2 poleDistances{0.0f};  // +inf at infinity
+  glm::vec3 poleColors[2];
+
+  size_t bytes() const;
+};
+
+PreparedPanorama preparePanorama(const Panorama& panorama, glm::vec3 position, float yawRadians, const WarpOptions& options);
+
+class GpuPanorama {
+public:
+  explicit GpuPanorama(const PreparedPanorama& prepared);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  glm::vec3 position() const { return position_; }
+  float yaw() const { return yaw_; }
+  GLuint colorTexture() const { return color_.get(); }
+  GLuint distanceTexture() const { return distance_.get(); }
+  GLuint triangleIndices() const { return triangles_.get(); }
+  GLuint orphanIndices() const { return orphans_.get(); }
+  GLsizei orphanCount() const { return orphanCount_; }
+  const std::vector<PanoramaTile>& tiles() const { return tiles_; }
+  glm::vec2 poleDistances() const { return poleDistances_; }
+  glm::vec3 poleColor(int pole) const { return poleColors_[pole]; }
+  size_t bytes() const { return bytes_; }
+
+private:
+  int width_ = 0, height_ = 0;
+  glm::vec3 position_{0.0f};
+  float yaw_ = 0.0f;
+  GlTexture color_, distance_;
+  GlBuffer triangles_, orphans_;
+  GLsizei orphanCount_ = 0;
+  std::vector<PanoramaTile> tiles_;
+  glm::vec2 poleDistances_{0.0f};
+  glm::vec3 poleColors_[2];
+  size_t bytes_ = 0;
+};
+
+}  // namespace triwalk

@@ -1,0 +1,204 @@
+#include "render/walkthrough/gpu_warper.h"
+
+#include "core/support/errors.h"
+
+#include <algorithm>
+#include <chrono>
+#include <vector>
+
+namespace triwalk {
+
+namespace {
+
+constexpr float kNearPlane = 0.01f;  // metres, as the CPU pinhole warp
+
+// Whether an axis-aligned box may intersect the frustum of planes through
+// the camera (normals pointing inside).
+bool boxInside(const std::array<glm::vec3, 5>& normals, const std::array<float, 5>& offsets, glm::vec3 origin,
+               glm::vec3 lower, glm::vec3 upper) {
+  for (size_t i = 0; i < normals.size(); ++i) {
+    const glm::vec3 n = normals[i];
+    const glm::vec3 farthest(n.x >= 0.0f ? upper.x : lower.x, n.y >= 0.0f ? upper.y : lower.y, n.z >= 0.0f ? upper.z : lower.z);
+    if (glm::dot(n, farthest - origin) < offsets[i]) return false;
+  }
+  return true;
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+glm::mat4 pinholeViewProjection(const PinholeCamera& camera, float near) {
+  const glm::vec3 r = camera.right(), u = camera.up(), f = camera.forward(), c = camera.position;
+  glm::mat4 view(1.0f);  // camera looks down -z, as OpenGL expects
+  view[0] = glm::vec4(r.x, u.x, -f.x, 0.0f);
+  view[1] = glm::vec4(r.y, u.y, -f.y, 0.0f);
+  view[2] = glm::vec4(r.z, u.z, -f.z, 0.0f);
+  view[3] = glm::vec4(-glm::dot(r, c), -glm::dot(u, c), glm::dot(f, c), 1.0f);
+  const float tanY = camera.tanHalfFovY();
+  glm::mat4 projection(0.0f);
+  projection[0][0] = 1.0f / (tanY * camera.aspect());
+  projection[1][1] = 1.0f / tanY;
+  projection[2][3] = -1.0f;
+  projection[3][2] = near;
+  return projection * view;
+}
+
+GpuWarper::GpuWarper(int width, int height)
+    : layerProgram_("warp_layer.vert", "warp_layer.frag"), resolveProgram_("fullscreen.vert", "warp_resolve.frag") {
+  vertexArray_ = createVertexArray();
+  resize(width, height);
+}
+
+void GpuWarper::resize(int width, int height) {
+  if (width == width_ && height == height_) return;
+  width_ = width;
+  height_ = height;
+  depth_ = createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(depth_.get(), 1, GL_DEPTH_COMPONENT32F, width, height);
+  for (size_t k = 0; k < layers_.size(); ++k) {
+    layers_[k] = createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(layers_[k].get(), 1, GL_RGBA16F, width, height);
+    layerFramebuffers_[k] = createFramebuffer();
+    glNamedFramebufferTexture(layerFramebuffers_[k].get(), GL_COLOR_ATTACHMENT0, layers_[k].get(), 0);
+    glNamedFramebufferTexture(layerFramebuffers_[k].get(), GL_DEPTH_ATTACHMENT, depth_.get(), 0);
+    requireCompleteFramebuffer(layerFramebuffers_[k], "warp layer");
+  }
+  output_ = createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(output_.get(), 1, GL_RGBA8, width, height);
+  glTextureParameteri(output_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(output_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  outputFramebuffer_ = createFramebuffer();
+  glNamedFramebufferTexture(outputFramebuffer_.get(), GL_COLOR_ATTACHMENT0, output_.get(), 0);
+  requireCompleteFramebuffer(outputFramebuffer_, "warp output");
+}
+
+void GpuWarper::drawLayer(const PinholeCamera& camera, const GpuPanorama& reference, int layer,
+                          GpuFrameStatistics& statistics) {
+  glBindFramebuffer(GL_FRAMEBUFFER, layerFramebuffers_[size_t(layer)].get());
+  const float uncovered[4] = {0.0f, 0.0f, 0.0f, -1.0f};
+  glClearNamedFramebufferfv(layerFramebuffers_[size_t(layer)].get(), GL_COLOR, 0, uncovered);
+  const float farDepth = 0.0f;
+  glClearNamedFramebufferfv(layerFramebuffers_[size_t(layer)].get(), GL_DEPTH, 0, &farDepth);
+
+  layerProgram_.set("panoramaSize", glm::ivec2(reference.width(), reference.height()));
+  layerProgram_.set("panoramaYaw", reference.yaw());
+  layerProgram_.set("sourcePosition", reference.position());
+  layerProgram_.set("poleDistances", reference.poleDistances());
+  const glm::vec3 poleColors[2] = {reference.poleColor(0), reference.poleColor(1)};
+  layerProgram_.setArray("poleColors", poleColors, 2);
+  glBindTextureUnit(0, reference.colorTexture());
+  glBindTextureUnit(1, reference.distanceTexture());
+
+  // Frustum planes through the camera, normals inside: four sides and the near plane.
+  const glm::vec3 f = camera.forward(), r = camera.right(), u = camera.up();
+  const float tanY = camera.tanHalfFovY(), tanX = tanY * camera.aspect();
+  const std::array<glm::vec3, 5> normals = {f * tanX - r, f * tanX + r, f * tanY - u, f * tanY + u, f};
+  const std::array<float, 5> pointOffsets = {0.0f, 0.0f, 0.0f, 0.0f, kNearPlane};
+  const std::array<float, 5> directionOffsets = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
+  std::vector<GLsizei> counts;
+  std::vector<const void*> offsets;
+  for (const PanoramaTile& tile : reference.tiles()) {
+    const bool visible =
+        (tile.hasFinite && boxInside(normals, pointOffsets, camera.position, tile.lower, tile.upper)) ||
+        (tile.hasInfinite && boxInside(normals, directionOffsets, glm::vec3(0.0f), tile.directionLower, tile.directionUpper));
+    if (!visible) {
+      ++statistics.tilesCulled;
+      continue;
+    }
+    ++statistics.tilesDrawn;
+    statistics.trianglesDrawn += size_t(tile.indexCount / 3);
+    counts.push_back(tile.indexCount);
+    offsets.push_back(reinterpret_cast<const void*>(tile.firstIndex * sizeof(uint32_t)));
+  }
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, reference.triangleIndices());
+  if (!counts.empty()) {
+    glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(), GLsizei(counts.size()));
+  }
+  // Vertices whose every triangle was dropped, as single points (as the CPU).
+  if (reference.orphanCount() > 0) {
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, reference.orphanIndices());
+    glDrawElements(GL_POINTS, reference.orphanCount(), GL_UNSIGNED_INT, nullptr);
+  }
+}
+
+GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<const GpuPanorama* const> references,
+                                     const GpuWarpSettings& settings, bool timePasses) {
+  TRIWALK_CHECK(!references.empty() && references.size() <= 3, "the warp takes one to three references");
+  TRIWALK_CHECK(camera.width == width_ && camera.height == height_, "camera size differs from the warper's");
+  GpuFrameStatistics statistics;
+  glViewport(0, 0, width_, height_);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_SCISSOR_TEST);
+  glBindVertexArray(vertexArray_.get());
+
+  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  glEnable(GL_DEPTH_TEST);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_GEQUAL);  // reversed depth; sky at exactly 0 still draws
+  layerProgram_.use();
+  layerProgram_.set("colorTexture", 0);
+  layerProgram_.set("distanceTexture", 1);
+  layerProgram_.set("viewProjection", pinholeViewProjection(camera, kNearPlane));
+  layerProgram_.set("cameraPosition", camera.position);
+  for (size_t k = 0; k < references.size(); ++k) {
+    if (timePasses) glFinish();
+    const auto start = std::chrono::steady_clock::now();
+    drawLayer(camera, *references[k], int(k), statistics);
+    if (timePasses) {
+      glFinish();
+      statistics.layerMilliseconds[k] = millisecondsSince(start);
+    }
+  }
+  glDisable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+
+  const auto resolveStart = std::chrono::steady_clock::now();
+  glBindFramebuffer(GL_FRAMEBUFFER, outputFramebuffer_.get());
+  resolveProgram_.use();
+  std::vector<glm::vec3> positions;
+  for (const GpuPanorama* reference : references) positions.push_back(reference->position());
+  const std::vector<float> weights = blendWeights(camera.position, positions, settings.blend);
+  glm::vec3 weightVector(0.0f);
+  for (size_t k = 0; k < weights.size(); ++k) weightVector[int(k)] = weights[k];
+  for (int k = 0; k < 3; ++k) {
+    const std::string name = "layer" + std::to_string(k);
+    resolveProgram_.set(name.c_str(), 2 + k);
+    glBindTextureUnit(GLuint(2 + k), layers_[size_t(k)].get());
+  }
+  resolveProgram_.set("layerCount", int(references.size()));
+  resolveProgram_.set("weights", weightVector);
+  resolveProgram_.set("epsilon", settings.blend.epsilon);
+  resolveProgram_.set("holeColor", settings.holeColor);
+  resolveProgram_.set("showSources", settings.showSources ? 1 : 0);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  if (timePasses) {
+    glFinish();
+    statistics.resolveMilliseconds = millisecondsSince(resolveStart);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glBindVertexArray(0);
+  return statistics;
+}
+
+Rgb8Image GpuWarper::readPixels() const {
+  Rgb8Image image(width_, height_);
+  std::vector<glm::u8vec3> rows(image.pixelCount());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, outputFramebuffer_.get());
+  glNamedFramebufferReadBuffer(outputFramebuffer_.get(), GL_COLOR_ATTACHMENT0);
+  glReadPixels(0, 0, width_, height_, GL_RGB, GL_UNSIGNED_BYTE, rows.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  // OpenGL's first row is the bottom one.
+  for (int y = 0; y < height_; ++y) {
+    std::copy_n(rows.begin() + ptrdiff_t(size_t(height_ - 1 - y) * size_t(width_)), width_,
+                image.pixels.begin() + ptrdiff_t(size_t(y) * size_t(width_)));
+  }
+  return image;
+}
+
+}  // namespace triwalk

@@ -1,0 +1,136 @@
+#include "render/walkthrough/panorama_cache.h"
+
+#include "core/support/errors.h"
+
+#include <algorithm>
+
+namespace triwalk {
+
+PanoramaCache::PanoramaCache(const Dataset& dataset, const WarpOptions& options, size_t budgetBytes)
+    : dataset_(dataset), options_(options), budgetBytes_(budgetBytes), loader_([this] { loaderLoop(); }) {}
+
+PanoramaCache::~PanoramaCache() {
+  {
+    std::lock_guard lock(mutex_);
+    stop_ = true;
+  }
+  wake_.notify_all();
+  loader_.join();
+}
+
+void PanoramaCache::request(std::span<const int> samples) {
+  {
+    std::lock_guard lock(mutex_);
+    wanted_.assign(samples.begin(), samples.end());
+    pinned_.assign(samples.begin(), samples.begin() + ptrdiff_t(std::min<size_t>(samples.size(), 3)));
+  }
+  wake_.notify_all();
+}
+
+void PanoramaCache::loaderLoop() {
+  std::unique_lock lock(mutex_);
+  while (true) {
+    wake_.wait(lock, [&] {
+      if (stop_) return true;
+      return std::any_of(wanted_.begin(), wanted_.end(), [&](int s) {
+        return !ready_.count(s) && !failures_.count(s) && !residentSamples_.count(s);
+      });
+    });
+    if (stop_) return;
+    int sample = -1;
+    for (int s : wanted_) {
+      if (!ready_.count(s) && !failures_.count(s) && !residentSamples_.count(s)) {
+        sample = s;
+        break;
+      }
+    }
+    loading_ = sample;
+    lock.unlock();
+    std::shared_ptr<const PreparedPanorama> prepared;
+    std::string failure;
+    try {
+      const ViewRecord& view = dataset_.sample(sample);
+      const Panorama panorama = dataset_.loadView(view);
+      prepared = std::make_shared<const PreparedPanorama>(
+          preparePanorama(panorama, view.position, degreesToRadians(view.yawDegrees), options_));
+    } catch (const std::exception& error) {
+      failure = error.what();
+    }
+    lock.lock();
+    loading_ = -1;
+    if (prepared) {
+      ready_[sample] = std::move(prepared);
+    } else {
+      failures_[sample] = failure;
+    }
+    prepared_.notify_all();
+  }
+}
+
+const GpuPanorama* PanoramaCache::find(int sample) {
+  const auto resident = resident_.find(sample);
+  if (resident != resident_.end()) {
+    recency_.remove(sample);
+    recency_.push_front(sample);
+    ++hits_;
+    return resident->second.get();
+  }
+  std::shared_ptr<const PreparedPanorama> prepared;
+  std::vector<int> pinned;
+  {
+    std::lock_guard lock(mutex_);
+    const auto failure = failures_.find(sample);
+    if (failure != failures_.end()) throw InputError(dataset_.sample(sample).file, failure->second);
+    const auto ready = ready_.find(sample);
+    if (ready == ready_.end()) {
+      ++misses_;
+      if (std::find(wanted_.begin(), wanted_.end(), sample) == wanted_.end()) wanted_.push_front(sample);
+      wake_.notify_all();
+      return nullptr;
+    }
+    prepared = ready->second;
+    ready_.erase(ready);
+    pinned = pinned_;
+  }
+  ++hits_;
+  auto panorama = std::make_unique<GpuPanorama>(*prepared);
+  residentBytes_ += panorama->bytes();
+  const GpuPanorama* result = panorama.get();
+  resident_[sample] = std::move(panorama);
+  recency_.push_front(sample);
+  std::vector<int> evicted;
+  // Evict the least recently used, never one the current frame needs.
+  for (auto it = recency_.end(); residentBytes_ > budgetBytes_ && it != recency_.begin();) {
+    --it;
+    if (*it == sample || std::find(pinned.begin(), pinned.end(), *it) != pinned.end()) continue;
+    residentBytes_ -= resident_.at(*it)->bytes();
+    resident_.erase(*it);
+    evicted.push_back(*it);
+    it = recency_.erase(it);
+  }
+  std::lock_guard lock(mutex_);
+  residentSamples_.insert(sample);
+  for (int s : evicted) residentSamples_.erase(s);
+  return result;
+}
+
+const GpuPanorama* PanoramaCache::wait(int sample) {
+  while (true) {
+    if (const GpuPanorama* panorama = find(sample)) return panorama;
+    std::unique_lock lock(mutex_);
+    prepared_.wait(lock, [&] { return ready_.count(sample) || failures_.count(sample); });
+  }
+}
+
+PanoramaCache::Statistics PanoramaCache::statistics() const {
+  Statistics statistics;
+  statistics.hits = hits_;
+  statistics.misses = misses_;
+  statistics.residentBytes = residentBytes_;
+  statistics.resident = int(resident_.size());
+  std::lock_guard lock(mutex_);
+  for (int s : wanted_) statistics.pending += !residentSamples_.count(s);
+  return statistics;
+}
+
+}  // namespace triwalk

@@ -1,0 +1,79 @@
+#pragma once
+// The working set of reference panoramas for rendering (the paper's
+// "working set management"): a least-recently-used cache of panoramas on
+// the GPU, filled by a loader thread that reads and prepares them
+// (OpenEXR decode, stretch test, tiling) so that a frame never waits on
+// disk. The viewer asks for the current triangle's references and, at
+// lower priority, its neighbours'; a panorama still loading is reported
+// missing and the frame draws without it.
+
+#include "core/io/dataset.h"
+#include "render/walkthrough/gpu_panorama.h"
+
+#include <condition_variable>
+#include <deque>
+#include <list>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <span>
+#include <string>
+#include <thread>
+
+namespace triwalk {
+
+class PanoramaCache {
+public:
+  // budgetBytes bounds the resident GPU panoramas (at least the most
+  // recently requested ones stay).
+  PanoramaCache(const Dataset& dataset, const WarpOptions& options, size_t budgetBytes);
+  ~PanoramaCache();
+  PanoramaCache(const PanoramaCache&) = delete;
+  PanoramaCache& operator=(const PanoramaCache&) = delete;
+
+  // The samples wanted now, most wanted first (replaces earlier wishes).
+  void request(std::span<const int> samples);
+  // GL thread: the panorama if it is ready (uploading it if it was
+  // prepared), else nullptr; never waits for the disk. Throws InputError
+  // if the loader could not read it.
+  const GpuPanorama* find(int sample);
+  // GL thread: waits until the sample is loaded (offline rendering).
+  const GpuPanorama* wait(int sample);
+
+  struct Statistics {
+    uint64_t hits = 0, misses = 0;
+    size_t residentBytes = 0;
+    int resident = 0;
+    int pending = 0;  // wanted and not ready yet
+  };
+  Statistics statistics() const;
+
+private:
+  void loaderLoop();
+
+  const Dataset& dataset_;
+  WarpOptions options_;
+  size_t budgetBytes_;
+
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;      // loader: new wishes or stop
+  std::condition_variable prepared_;  // GL thread: something was prepared
+  std::deque<int> wanted_;
+  std::vector<int> pinned_;  // the latest request, never evicted
+  std::map<int, std::shared_ptr<const PreparedPanorama>> ready_;
+  std::map<int, std::string> failures_;
+  std::set<int> residentSamples_;  // mirror of resident_ for the loader
+  int loading_ = -1;
+  bool stop_ = false;
+
+  // GL thread only.
+  std::map<int, std::unique_ptr<GpuPanorama>> resident_;
+  std::list<int> recency_;  // most recent first
+  size_t residentBytes_ = 0;
+  uint64_t hits_ = 0, misses_ = 0;
+
+  std::thread loader_;
+};
+
+}  // namespace triwalk

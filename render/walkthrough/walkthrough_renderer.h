@@ -1,0 +1,46 @@
+#pragma once
+// Walkthrough frames: the triangle of the selection around the camera
+// (found by walking from the last one; outside the covered area, the
+// nearest), its three panoramas from the working set, warped on the GPU.
+// The working set is asked for the triangle's references first and the
+// neighbouring triangles' next, so that walking on finds them loaded.
+
+#include "core/geometry/view_mesh.h"
+#include "render/walkthrough/gpu_warper.h"
+#include "render/walkthrough/panorama_cache.h"
+
+#include <array>
+
+namespace triwalk {
+
+class WalkthroughRenderer {
+public:
+  WalkthroughRenderer(ViewMesh mesh, PanoramaCache& cache, int width, int height);
+
+  struct Frame {
+    int triangle = -1;
+    std::array<int, 3> references{-1, -1, -1};  // sample indices
+    int available = 0;                          // references drawn (the others still loading)
+    GpuFrameStatistics statistics;
+  };
+
+  // waitForPanoramas: offline rendering waits for the disk; the viewer
+  // does not (a frame with no reference loaded leaves the output as it was).
+  Frame render(const PinholeCamera& camera, const GpuWarpSettings& settings, bool waitForPanoramas,
+               bool timePasses = false);
+
+  const ViewMesh& mesh() const { return mesh_; }
+  void setMesh(ViewMesh mesh);
+  GpuWarper& warper() { return warper_; }
+  int triangleAt(glm::vec3 position);
+
+private:
+  void prefetch(int triangle, glm::vec3 position);
+
+  ViewMesh mesh_;
+  PanoramaCache& cache_;
+  GpuWarper warper_;
+  int lastTriangle_ = -1;
+};
+
+}  // namespace triwalk

@@ -63,4 +63,13 @@ TEST_CASE("inputs that crashed or hung a fuzzer are read or refused with a one-l
   CHECK(inputs >= 1);
 }
 
+
+TEST_CASE("an EXR header attribute that claims more bytes than the file holds is refused before OpenEXR reads it") {
+  // OpenEXR would allocate and clear the claimed size first (seconds under
+  // the sanitizers); the check names the attribute instead.
+  const std::filesystem::path input =
+      std::filesystem::path(TRIWALK_SOURCE_DIR) / "fuzz/regressions/exr/attribute-size-past-end";
+  CHECK_THROWS_WITH_AS(readPanoramaExr(input), doctest::Contains("claims 1852402688 bytes but the file has 4 left"), InputError);
+}
+
 }  // namespace triwalk

@@ -12,6 +12,7 @@
 #include <half.h>
 
 #include <cmath>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -22,12 +23,49 @@ namespace {
 constexpr const char* kColorChannels[3] = {"R", "G", "B"};
 constexpr const char* kDistanceChannel = "Z";
 
+// OpenEXR allocates and clears every header attribute at the size the file
+// claims before it notices the file is shorter, so a 200-byte file can cost
+// seconds (found by fuzzing). This walks the first header's attribute
+// records (name, type, 32-bit size, value) and refuses a size that runs
+// past the end of the file; it reads no attribute and leaves all decoding
+// to OpenEXR.
+void checkHeaderAttributeSizes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  const auto fileSize = int64_t(std::filesystem::file_size(path));
+  constexpr int64_t kMagicAndVersion = 8;
+  constexpr size_t kMaxNameLength = 255;
+  in.seekg(kMagicAndVersion);
+  const auto readString = [&](std::string& text) {
+    text.clear();
+    char c = 0;
+    while (in.get(c) && c != '\0') {
+      if (text.size() == kMaxNameLength) return false;
+      text.push_back(c);
+    }
+    return bool(in);
+  };
+  std::string attribute, type;
+  while (readString(attribute) && !attribute.empty() && readString(type)) {
+    uint8_t sizeBytes[4];
+    if (!in.read(reinterpret_cast<char*>(sizeBytes), 4)) return;  // OpenEXR reports the truncation
+    const int64_t size = int64_t(int32_t(uint32_t(sizeBytes[0]) | uint32_t(sizeBytes[1]) << 8 |
+                                         uint32_t(sizeBytes[2]) << 16 | uint32_t(sizeBytes[3]) << 24));
+    const int64_t remaining = fileSize - int64_t(in.tellg());
+    if (size < 0 || size > remaining) {
+      throw InputError(path.string(), "header attribute '" + attribute + "' claims " + std::to_string(size) +
+                                          " bytes but the file has " + std::to_string(remaining) + " left");
+    }
+    in.seekg(size, std::ios::cur);
+  }
+}
+
 }  // namespace
 
 Panorama readPanoramaExr(const std::filesystem::path& path, std::optional<glm::ivec2> expectedSize) {
   const std::string name = path.string();
   if (!std::filesystem::exists(path)) throw InputError(name, "file does not exist");
   try {
+    checkHeaderAttributeSizes(path);
     Imf::InputFile file(name.c_str());
     const Imf::Header& header = file.header();
     const Imath::Box2i window = header.dataWindow();

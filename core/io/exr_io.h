@@ -14,7 +14,8 @@ namespace triwalk {
 
 // The largest panorama triwalk reads (32768 x 16384): a header is checked
 // against it, and against the expected size, before any pixel memory is
-// allocated, so a 1 KB file cannot claim gigabytes (found by fuzzing).
+// allocated, so a 1 KB file cannot claim gigabytes (found by fuzzing); so
+// is every header attribute's size against what the file holds.
 inline constexpr int kMaxPanoramaWidth = 32768;
 
 // Reads and validates: the size (at most kMaxPanoramaWidth x half, and

@@ -3,7 +3,8 @@
 // rule as core/synthesis/blend.cpp): z_front is the nearest distance over layers,
 // layers within epsilon * z_front of it average with weights
 // 1 / max(dist(D, S_k), r_min); pixels no layer covers are holes.
-// Writes display (sRGB-encoded) color.
+// Writes linear colour and the inverse distance of z_front (0 for sky,
+// -1 for holes), for the hole fill and warp_present.frag.
 #include "projection.glsl"
 uniform sampler2D layer0;
 uniform sampler2D layer1;
@@ -11,14 +12,8 @@ uniform sampler2D layer2;
 uniform int layerCount;
 uniform vec3 weights;
 uniform float epsilon;
-uniform vec3 holeColor;     // display color of holes
 uniform bool showSources;   // color by the references that contributed
-out vec4 outColor;
-
-float linearToSrgb(float linear) {
-  float c = clamp(linear, 0.0, 1.0);
-  return c <= 0.0031308 ? 12.92 * c : 1.055 * pow(c, 1.0 / 2.4) - 0.055;
-}
+out vec4 outValue;
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -31,7 +26,7 @@ void main() {
     front = min(front, values[k].a > 0.0 ? 1.0 / values[k].a : positiveInfinity());
   }
   if (!covered) {
-    outColor = vec4(holeColor, 1.0);
+    outValue = vec4(0.0, 0.0, 0.0, -1.0);
     return;
   }
   vec3 sum = vec3(0.0);
@@ -46,10 +41,6 @@ void main() {
     weightSum += weights[k];
     sources[k] = 1.0;
   }
-  if (showSources) {
-    outColor = vec4(sources, 1.0);
-    return;
-  }
-  vec3 color = sum / weightSum;
-  outColor = vec4(linearToSrgb(color.r), linearToSrgb(color.g), linearToSrgb(color.b), 1.0);
+  float inverseFront = isinf(front) ? 0.0 : 1.0 / front;
+  outValue = vec4(showSources ? sources : sum / weightSum, inverseFront);
 }

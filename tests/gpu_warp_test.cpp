@@ -7,6 +7,7 @@
 #include "core/io/png_io.h"
 #include "core/selection/selection.h"
 #include "core/synthesis/blend.h"
+#include "core/synthesis/hole_fill.h"
 #include "core/synthesis/view_synthesis.h"
 #include "render/capture/dataset_capture.h"
 #include "render/gl/gl_context.h"
@@ -37,7 +38,7 @@ PinholeCamera testCamera(glm::vec3 position, float yaw, int width, int height) {
 
 // GPU frame of a camera from three samples of a data set.
 Rgb8Image gpuFrame(const Dataset& dataset, const std::vector<int>& references, const PinholeCamera& camera,
-                   HeadlessBackend backend) {
+                   HeadlessBackend backend, HoleMode holes) {
   auto context = createHeadlessContext(backend);
   std::vector<std::unique_ptr<GpuPanorama>> panoramas;
   std::vector<const GpuPanorama*> pointers;
@@ -47,11 +48,19 @@ Rgb8Image gpuFrame(const Dataset& dataset, const std::vector<int>& references, c
     pointers.push_back(panoramas.back().get());
   }
   GpuWarper warper(camera.width, camera.height);
-  warper.render(camera, pointers, GpuWarpSettings{});
+  GpuWarpSettings settings;
+  settings.holes = holes;
+  warper.render(camera, pointers, settings);
   return warper.readPixels();
 }
 
-Rgb8Image cpuFrame(const Dataset& dataset, const std::vector<int>& references, const PinholeCamera& camera) {
+struct CpuFrame {
+  Rgb8Image image;
+  size_t holesBefore = 0;
+};
+
+CpuFrame cpuFrame(const Dataset& dataset, const std::vector<int>& references, const PinholeCamera& camera,
+                  HoleMode holes) {
   std::vector<std::unique_ptr<WarpSource>> sources;
   std::vector<const WarpSource*> pointers;
   for (int sample : references) {
@@ -59,12 +68,15 @@ Rgb8Image cpuFrame(const Dataset& dataset, const std::vector<int>& references, c
     sources.push_back(std::make_unique<WarpSource>(dataset.loadView(view), view.position, 0.0f, WarpOptions{}));
     pointers.push_back(sources.back().get());
   }
-  const SynthesizedView view = synthesizeView(pointers, DestinationCamera::camera(camera), SynthesisOptions{});
-  Rgb8Image image(camera.width, camera.height);
-  for (size_t i = 0; i < image.pixelCount(); ++i) {
-    image.pixels[i] = toBytes(view.blended.hole[i] ? GpuWarpSettings{}.holeColor : displayColor(view.blended.color.pixels[i]));
+  SynthesisOptions options;
+  options.holes = holes;
+  const SynthesizedView view = synthesizeView(pointers, DestinationCamera::camera(camera), options);
+  CpuFrame frame{Rgb8Image(camera.width, camera.height), view.fill.holesBefore};
+  for (size_t i = 0; i < frame.image.pixelCount(); ++i) {
+    frame.image.pixels[i] =
+        toBytes(view.blended.hole[i] ? holeDisplayColor(holes) : displayColor(view.blended.color.pixels[i]));
   }
-  return image;
+  return frame;
 }
 
 }  // namespace
@@ -74,20 +86,38 @@ TEST_CASE("GPU warp matches the CPU reference warp (PSNR >= 35 dB), through EGL 
   testing::writeAnalyticDataset(directory.path(), 3, 3, 512, 0);
   const Dataset dataset = Dataset::open(directory.path());
   // Samples 3, 4, 6 are (2, 0), (2, 1), (4, 0); the camera is between them.
-  const std::vector<int> references = {3, 4, 6};
-  for (const float yaw : {0.0f, 130.0f, 250.0f}) {
-    const PinholeCamera camera = testCamera({2.7f, 0.4f, 1.4f}, yaw, 320, 240);
-    const Rgb8Image cpu = cpuFrame(dataset, references, camera);
-    const Rgb8Image egl = gpuFrame(dataset, references, camera, HeadlessBackend::Egl);
-    const Rgb8Image osmesa = gpuFrame(dataset, references, camera, HeadlessBackend::OsMesa);
-    INFO("yaw " << yaw << ": PSNR " << psnr(egl, cpu) << " dB");
-    // Pixels may differ where a triangle edge passes exactly through a
-    // pixel centre (OpenGL's top-left rule against the CPU's inclusive
-    // edges) and where perspective interpolation rounds differently.
-    CHECK(psnr(egl, cpu) >= 35.0);
-    CHECK(differingPixelFraction(egl, cpu, 16) < 0.01);
-    CHECK(psnr(egl, osmesa) >= 60.0);
+  // Sample 0 at (0, 0) alone, seen from (3, 1) towards the pillar at
+  // (1.5, 2.6): the wall it hides from sample 0 is a hole to fill.
+  struct View {
+    std::vector<int> references;
+    glm::vec3 position;
+    float yaw;
+  };
+  const std::vector<View> views = {{{3, 4, 6}, {2.7f, 0.4f, 1.4f}, 0.0f},
+                                   {{3, 4, 6}, {2.7f, 0.4f, 1.4f}, 130.0f},
+                                   {{3, 4, 6}, {2.7f, 0.4f, 1.4f}, 250.0f},
+                                   {{0}, {3.0f, 1.0f, 1.4f}, 125.0f}};
+  size_t holes = 0;
+  for (const HoleMode mode : {HoleMode::Mark, HoleMode::Fill}) {
+    for (const auto& [references, position, yaw] : views) {
+      const PinholeCamera camera = testCamera(position, yaw, 320, 240);
+      const CpuFrame cpu = cpuFrame(dataset, references, camera, mode);
+      const Rgb8Image egl = gpuFrame(dataset, references, camera, HeadlessBackend::Egl, mode);
+      const Rgb8Image osmesa = gpuFrame(dataset, references, camera, HeadlessBackend::OsMesa, mode);
+      holes += cpu.holesBefore;
+      INFO(std::string(holeModeName(mode)) << ", yaw " << yaw << ": PSNR " << psnr(egl, cpu.image) << " dB, " << cpu.holesBefore
+                              << " holes before filling");
+      // Pixels may differ where a triangle edge passes exactly through a
+      // pixel centre (OpenGL's top-left rule against the CPU's inclusive
+      // edges) and where perspective interpolation rounds differently; the
+      // GPU's fill works on half floats.
+      CHECK(psnr(egl, cpu.image) >= 35.0);
+      CHECK(differingPixelFraction(egl, cpu.image, 16) < 0.01);
+      CHECK(psnr(egl, osmesa) >= 60.0);
+    }
   }
+  // The frames have holes, so the filled comparison compares fills.
+  CHECK(holes > 1000);
 }
 
 TEST_CASE("the walkthrough renderer draws the three references of the triangle around the camera") {

@@ -34,8 +34,12 @@ ReconstructionError compare(const BlendedView& view, const Panorama& truth, Scal
   return reconstructionError(toDisplayColors(view.color), view.hole, toDisplayColors(truth.color), ErrorOptions{}, perPixel);
 }
 
+// The warp and blend without the hole fill: these tests look at what the
+// warp itself leaves.
+const SynthesisOptions kRaw{.warp = {}, .blend = {}, .holes = HoleMode::Mark};
+
 SynthesizedView synthesize(const AnalyticScene& scene, std::vector<glm::vec3> sourcePositions, glm::vec3 destination,
-                           const SynthesisOptions& options = {}) {
+                           const SynthesisOptions& options = kRaw) {
   std::vector<std::unique_ptr<WarpSource>> sources;
   std::vector<const WarpSource*> pointers;
   for (glm::vec3 position : sourcePositions) {
@@ -201,7 +205,7 @@ TEST_CASE("the paper's point warp leaves cracks where the mesh warp does not") {
   AnalyticScene scene;
   scene.room = AnalyticScene::Room{{-3.0f, -2.0f, 0.0f}, {3.0f, 2.0f, 2.5f}, false};
   const glm::vec3 source(-1.0f, 0.0f, 1.5f), destination(1.5f, 0.0f, 1.5f);  // magnifies the east wall
-  SynthesisOptions point;
+  SynthesisOptions point = kRaw;
   point.warp.method = WarpMethod::Point;
   const SynthesizedView mesh = synthesize(scene, {source}, destination);
   const SynthesizedView points = synthesize(scene, {source}, destination, point);
@@ -216,9 +220,9 @@ TEST_CASE("the stretch test drops rubber sheets; without it they hide what a sec
   const AnalyticScene scene = roomWithPillar();
   const glm::vec3 s1(-1.0f, 0.0f, 1.5f), destination(1.0f, 0.0f, 1.5f), s2(2.0f, 0.0f, 1.5f);
   const Panorama truth = renderPanorama(scene, destination, kWidth);
-  SynthesisOptions none;
+  SynthesisOptions none = kRaw;
   none.warp.stretchTest = StretchTest::None;
-  SynthesisOptions ratio;
+  SynthesisOptions ratio = kRaw;
   ratio.warp.stretchTest = StretchTest::DepthRatio;
   const ReconstructionError withGrazing = compare(synthesize(scene, {s1, s2}, destination).blended, truth);
   const ReconstructionError withRatio = compare(synthesize(scene, {s1, s2}, destination, ratio).blended, truth);

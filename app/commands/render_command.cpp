@@ -8,6 +8,7 @@
 #include "core/image/color.h"
 #include "core/image/image_compare.h"
 #include "core/io/camera_path.h"
+#include "core/io/json_fields.h"
 #include "core/io/png_io.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
@@ -25,10 +26,10 @@ namespace triwalk {
 
 namespace {
 
-// The CPU reference of a frame, in display bytes with the GPU's hole color.
+// The CPU reference of a frame (filled, marked or black as the GPU's), in
+// display bytes.
 Rgb8Image cpuReference(const Dataset& dataset, const std::array<int, 3>& references, const PinholeCamera& camera,
-                       const SynthesisOptions& synthesis, glm::vec3 holeColor,
-                       std::map<int, std::unique_ptr<WarpSource>>& sources) {
+                       const SynthesisOptions& synthesis, std::map<int, std::unique_ptr<WarpSource>>& sources) {
   std::vector<const WarpSource*> pointers;
   for (int sample : references) {
     auto& source = sources[sample];
@@ -42,7 +43,8 @@ Rgb8Image cpuReference(const Dataset& dataset, const std::array<int, 3>& referen
   const SynthesizedView view = synthesizeView(pointers, DestinationCamera::camera(camera), synthesis);
   Rgb8Image image(camera.width, camera.height);
   for (size_t i = 0; i < image.pixelCount(); ++i) {
-    image.pixels[i] = toBytes(view.blended.hole[i] ? holeColor : displayColor(view.blended.color.pixels[i]));
+    image.pixels[i] =
+        toBytes(view.blended.hole[i] ? holeDisplayColor(synthesis.holes) : displayColor(view.blended.color.pixels[i]));
   }
   return image;
 }
@@ -51,7 +53,7 @@ Rgb8Image cpuReference(const Dataset& dataset, const std::array<int, 3>& referen
 
 void registerRenderCommand(CLI::App& app) {
   struct Arguments {
-    std::string dataset, selection, path = "rotate", out, size = "1280x720", holes = "mark", gl = "auto";
+    std::string dataset, selection, path = "rotate", out, size = "1280x720", gl = "auto", stats;
     float fov = 60.0f, pitch = 0.0f;
     std::vector<float> at, from, to, yaw;
     int frames = 0;
@@ -80,8 +82,9 @@ void registerRenderCommand(CLI::App& app) {
   command->add_option("--pitch", arguments->pitch, "Pitch of preset paths, degrees")->capture_default_str();
   command->add_flag("--compare", arguments->compare,
                     "Also write the CPU reference and a difference heatmap of each frame, and print PSNR");
-  command->add_option("--holes", arguments->holes, "Holes: mark (magenta) or black")
-      ->capture_default_str()->check(CLI::IsMember({"mark", "black"}));
+  command->add_option("--stats", arguments->stats,
+                      "Write per-frame statistics (holes before the fill, left after it, frame time) to this JSON file")
+      ->check(writableFile());
   command->add_flag("--show-sources", arguments->showSources, "Color each pixel by the references that made it");
   command->add_option("--cache-mb", arguments->cacheMegabytes, "Memory for resident panoramas, MiB")->capture_default_str();
   command->add_option("--gl", arguments->gl, "Headless OpenGL: auto, egl or osmesa")->capture_default_str();
@@ -122,10 +125,11 @@ void registerRenderCommand(CLI::App& app) {
     WalkthroughRenderer renderer(std::move(mesh), cache, width, height);
     GpuWarpSettings settings;
     settings.blend = synthesis.blend;
-    settings.holeColor = a.holes == "mark" ? glm::vec3(1.0f, 0.0f, 1.0f) : glm::vec3(0.0f);
+    settings.holes = synthesis.holes;
     settings.showSources = a.showSources;
     std::filesystem::create_directories(a.out);
     std::map<int, std::unique_ptr<WarpSource>> cpuSources;
+    nlohmann::json statistics = {{"holes", holeModeName(synthesis.holes)}, {"frames", nlohmann::json::array()}};
     double psnrSum = 0.0, worstPsnr = INFINITY;
     double frameMilliseconds = 0.0;
     InterruptScope interruptScope;
@@ -142,13 +146,21 @@ void registerRenderCommand(CLI::App& app) {
       const auto start = std::chrono::steady_clock::now();
       const WalkthroughRenderer::Frame frame = renderer.render(camera, settings, true);
       const Rgb8Image image = renderer.warper().readPixels();
-      frameMilliseconds += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      const double milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      frameMilliseconds += milliseconds;
+      if (!a.stats.empty()) {
+        const GpuHoleCounts holes = renderer.warper().countHoles();
+        statistics["frames"].push_back({{"frame", i},
+                                        {"holes_before_fill", double(holes.holesBefore) / double(holes.pixels)},
+                                        {"unfilled", double(holes.unfilled) / double(holes.pixels)},
+                                        {"ms", milliseconds}});
+      }
       char name[64];
       std::snprintf(name, sizeof name, "frame_%04zu", i);
       const std::filesystem::path stem = std::filesystem::path(a.out) / name;
       writePng(stem.string() + ".png", image);
       if (a.compare) {
-        const Rgb8Image reference = cpuReference(dataset, frame.references, camera, synthesis, settings.holeColor, cpuSources);
+        const Rgb8Image reference = cpuReference(dataset, frame.references, camera, synthesis, cpuSources);
         if (cpuSources.size() > 9) cpuSources.clear();
         writePng(stem.string() + "_cpu.png", reference);
         writePng(stem.string() + "_diff.png", heatmapImage(differenceImage(image, reference), 0.25f));
@@ -160,8 +172,12 @@ void registerRenderCommand(CLI::App& app) {
       progress.advance();
     }
     progress.finish();
-    std::printf("rendered %zu frames %dx%d into %s, %.1f ms a frame with loading\n", poses.size(), width, height,
-                a.out.c_str(), frameMilliseconds / double(poses.size()));
+    std::printf("rendered %zu frames %dx%d into %s (holes %s), %.1f ms a frame with loading\n", poses.size(), width,
+                height, a.out.c_str(), holeModeName(synthesis.holes), frameMilliseconds / double(poses.size()));
+    if (!a.stats.empty()) {
+      writeJsonFile(a.stats, statistics);
+      std::printf("wrote frame statistics to %s\n", a.stats.c_str());
+    }
     if (a.compare) {
       std::printf("GPU vs CPU reference: mean PSNR %.2f dB, worst %.2f dB\n", psnrSum / double(poses.size()), worstPsnr);
     }

@@ -116,7 +116,7 @@ void registerSynthCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_flag("--all-probes", arguments->allProbes,
                     "For every probe: E from the 1 and the 3 nearest samples, as a table");
-  addQualityOptions(*command, arguments->quality);
+  addQualityOptions(*command, arguments->quality, HoleMode::Fill);
 
   command->callback([arguments] {
     const Arguments& a = *arguments;
@@ -141,13 +141,19 @@ void registerSynthCommand(CLI::App& app) {
 
     const Reconstruction result = reconstruct(dataset, references, at, a.width, truth.get(), synthesis, errors);
     const BlendedView& blended = result.view.blended;
-    const size_t holes = size_t(std::count(blended.hole.begin(), blended.hole.end(), uint8_t(1)));
-    std::printf("reconstructed %dx%d at (%.3f, %.3f, %.3f) from %zu references; holes %.3f%% of pixels\n",
+    const double pixels = double(blended.hole.size());
+    std::printf("reconstructed %dx%d at (%.3f, %.3f, %.3f) from %zu references; holes %.3f%% of pixels before "
+                "filling, %.3f%% left (--holes %s)\n",
                 blended.color.width, blended.color.height, at.x, at.y, at.z, references.size(),
-                100.0 * double(holes) / double(blended.hole.size()));
+                100.0 * double(result.view.fill.holesBefore) / pixels, 100.0 * double(result.view.fill.unfilled) / pixels,
+                holeModeName(synthesis.holes));
     if (!a.out.empty()) {
       std::filesystem::create_directories(a.out);
-      writePng(std::filesystem::path(a.out) / "reconstruction.png", toDisplayImage(blended.color));
+      Rgb8Image image = toDisplayImage(blended.color);
+      for (size_t i = 0; i < image.pixelCount(); ++i) {
+        if (blended.hole[i]) image.pixels[i] = toBytes(holeDisplayColor(synthesis.holes));
+      }
+      writePng(std::filesystem::path(a.out) / "reconstruction.png", image);
     }
     if (!truth) {
       std::printf("no ground truth at this position (give --truth to compare)\n");

@@ -13,7 +13,7 @@ void addErrorOptions(CLI::App& command, ErrorArguments& arguments) {
                      "Where a triangle's error is measured: centroid (the paper's), quadrature (centroid and the "
                      "three sub-triangle centroids) or interior (up to 8 samples inside it)")
       ->capture_default_str()->check(CLI::IsMember({"centroid", "quadrature", "interior"}));
-  addQualityOptions(command, arguments.quality);
+  addQualityOptions(command, arguments.quality, kDefaultErrorHoles);
 }
 
 TriangleErrorSettings triangleErrorSettings(const ErrorArguments& arguments, const Dataset& dataset) {

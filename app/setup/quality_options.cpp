@@ -18,6 +18,12 @@ void addStretchOptions(CLI::App& command, QualityArguments& arguments) {
       ->capture_default_str()->check(CLI::Range(1.0f, 1000.0f))->group("Warp");
 }
 
+void addHoleOption(CLI::App& command, QualityArguments& arguments, HoleMode holes, const char* help) {
+  arguments.holes = holeModeName(holes);
+  command.add_option("--holes", arguments.holes, help)
+      ->capture_default_str()->check(CLI::IsMember({"fill", "mark", "black"}))->group("Blend");
+}
+
 void addBlendOptions(CLI::App& command, QualityArguments& arguments) {
   command.add_option("--epsilon", arguments.epsilon, "Blend interval, relative to the nearest distance (Eq. 1)")
       ->capture_default_str()->check(CLI::Range(0.0f, 10.0f))->group("Blend");
@@ -30,13 +36,18 @@ void addBlendOptions(CLI::App& command, QualityArguments& arguments) {
 void addRenderQualityOptions(CLI::App& command, QualityArguments& arguments) {
   addStretchOptions(command, arguments);
   addBlendOptions(command, arguments);
+  addHoleOption(command, arguments, HoleMode::Fill,
+                "Holes after the blend: fill (push-pull from the background), mark (magenta) or black");
 }
 
-void addQualityOptions(CLI::App& command, QualityArguments& arguments) {
+void addQualityOptions(CLI::App& command, QualityArguments& arguments, HoleMode holes) {
   addStretchOptions(command, arguments);
   command.add_flag("--point-warp", arguments.pointWarp, "The paper's literal point warp instead of the triangle mesh")
       ->group("Warp");
   addBlendOptions(command, arguments);
+  addHoleOption(command, arguments, holes,
+                "Holes after the blend: fill (the error sees the filled view, as a walker does), or mark / black "
+                "(the raw warp: holes count as black and as bad pixels, the paper's)");
   command.add_option("--alpha", arguments.alpha, "Weight of R in E = alpha R + beta B")->capture_default_str()->group("Error");
   command.add_option("--beta", arguments.beta, "Weight of B (percent of bad pixels)")->capture_default_str()->group("Error");
   command.add_option("--delta", arguments.delta, "Bad-pixel tolerance on the 0..255 scale")
@@ -53,6 +64,7 @@ SynthesisOptions synthesisOptions(const QualityArguments& arguments) {
   options.warp.maxDepthRatio = arguments.maxDepthRatio;
   options.blend.epsilon = arguments.epsilon;
   options.blend.minimumWeightDistance = arguments.minimumWeightDistance;
+  options.holes = parseHoleMode(arguments.holes.empty() ? "fill" : arguments.holes);
   return options;
 }
 
@@ -77,9 +89,11 @@ std::string describeQuality(const SynthesisOptions& synthesis, const ErrorOption
     std::snprintf(stretch, sizeof stretch, "no stretch test");
   }
   std::snprintf(text, sizeof text,
-                "warp %s (%s); blend epsilon %.3f, r_min %.2f m; error E = %g R + %g B, delta %g/255, %s pixel weighting",
+                "warp %s (%s); blend epsilon %.3f, r_min %.2f m; holes %s; error E = %g R + %g B, delta %g/255, %s pixel "
+                "weighting",
                 warp.method == WarpMethod::Mesh ? "mesh" : "point", stretch, synthesis.blend.epsilon,
-                synthesis.blend.minimumWeightDistance, error.alpha, error.beta, error.delta,
+                synthesis.blend.minimumWeightDistance,
+                synthesis.holes == HoleMode::Fill ? "filled" : "raw", error.alpha, error.beta, error.delta,
                 pixelWeightingName(error.weighting));
   return text;
 }

@@ -22,11 +22,14 @@ struct QualityArguments {
   double beta = ErrorOptions{}.beta;
   double delta = ErrorOptions{}.delta;
   std::string pixelWeighting = "solid-angle";
+  std::string holes;  // set by the command's default when registered
 };
 
-// Warp, blend and error options (synth, decimate, eval).
-void addQualityOptions(CLI::App& command, QualityArguments& arguments);
-// The stretch test and the blend only (render, view: the GPU warp).
+// Warp, blend, hole and error options (synth, decimate, eval); holes: the
+// command's default for --holes (what the error is measured on).
+void addQualityOptions(CLI::App& command, QualityArguments& arguments, HoleMode holes);
+// The stretch test, the blend and --holes (default fill) only (render,
+// view: the GPU warp).
 void addRenderQualityOptions(CLI::App& command, QualityArguments& arguments);
 
 SynthesisOptions synthesisOptions(const QualityArguments& arguments);

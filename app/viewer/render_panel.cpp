@@ -33,8 +33,10 @@ void drawRenderPanel(ViewerState& state) {
   ImGui::SliderFloat("grazing angle", &state.grazingAngleDegrees, 0.5f, 30.0f, "%.1f deg");
   ImGui::SameLine();
   if (ImGui::Button("apply")) state.stretchChanged = true;
-  bool markHoles = state.warp.holeColor != glm::vec3(0.0f);
-  if (ImGui::Checkbox("mark holes in magenta", &markHoles)) state.warp.holeColor = markHoles ? glm::vec3(1, 0, 1) : glm::vec3(0);
+  int holes = int(state.warp.holes);
+  if (ImGui::Combo("holes", &holes, "fill from the background\0mark in magenta\0black\0")) {
+    state.warp.holes = HoleMode(holes);
+  }
   ImGui::Checkbox("show references (red, green, blue)", &state.warp.showSources);
   ImGui::SliderFloat("field of view", &state.verticalFovDegrees, 30.0f, 110.0f, "%.0f deg");
   ImGui::SliderFloat("render scale", &state.renderScale, 0.25f, 1.0f, "%.2f");

@@ -58,12 +58,16 @@ public:
     TriangleErrorSettings errorSettings;
     errorSettings.width = errorWidthFor(dataset_, options.errorWidth);
     errorSettings.synthesis = options.synthesis;
+    // --holes chooses what the walker sees; live decimation measures its
+    // errors as decimate does by default, so its steps match the command's.
+    errorSettings.synthesis.holes = kDefaultErrorHoles;
     session_ = std::make_unique<DecimationSession>(dataset_, errorSettings, DecimationOptions{}, selection);
     state_.dataset = &dataset_;
     state_.session = session_.get();
     state_.snapshot = session_->snapshot();
     state_.mesh = ViewMesh(samplePositions(dataset_), state_.snapshot.triangles);
     state_.warp.blend = options.synthesis.blend;
+    state_.warp.holes = options.synthesis.holes;
     state_.grazingAngleDegrees = options.synthesis.warp.grazingAngleDegrees;
     state_.walk.position = startPosition(state_.mesh, sampleEyeHeight(dataset_));
     warpOptions_ = options.synthesis.warp;

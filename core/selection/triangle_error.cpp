@@ -140,9 +140,21 @@ double DatasetTriangleErrors::sampleError(const Triangle& triangle, int destinat
     sourcePositions[k] = source.position();
   }
   const std::vector<float> weights = blendWeights(position, sourcePositions, settings_.synthesis.blend);
-  // Blend and compare pixel by pixel, without building the blended image.
   const ColorImage& truth = sampleDisplay_[size_t(destination)];
   ErrorAccumulator accumulator(truth.width, truth.height, settings_.error);
+  if (settings_.synthesis.holes == HoleMode::Fill) {
+    // The fill needs the whole blended image.
+    BlendedView view = blendLayersOf<CompactLayer>(pointers, weights, truth.width, truth.height, settings_.synthesis.blend);
+    fillHoles(view, settings_.synthesis.blend.epsilon);
+    tbb::parallel_for(0, truth.height, [&](int y) {
+      for (int x = 0; x < truth.width; ++x) {
+        const size_t i = size_t(y) * size_t(truth.width) + size_t(x);
+        accumulator.add(y, displayColorFast(view.color.pixels[i]), view.hole[i] != 0, truth.pixels[i]);
+      }
+    });
+    return accumulator.result().total;
+  }
+  // Blend and compare pixel by pixel, without building the blended image.
   tbb::parallel_for(0, truth.height, [&](int y) {
     for (int x = 0; x < truth.width; ++x) {
       const size_t i = size_t(y) * size_t(truth.width) + size_t(x);

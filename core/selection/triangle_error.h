@@ -67,11 +67,16 @@ inline constexpr int kDefaultErrorWidth = 256;
 // data set's width.
 int errorWidthFor(const Dataset& dataset, int requested);
 
+// What decimation and evaluation measure the error on unless asked: the
+// raw warp, holes counted as black and bad (the paper's); docs/RESULTS.md,
+// "Hole filling", has both measured.
+inline constexpr HoleMode kDefaultErrorHoles = HoleMode::Black;
+
 struct TriangleErrorSettings {
   int width = kDefaultErrorWidth;  // panorama width the errors are computed at
   size_t layerCacheBytes = defaultLayerCacheBytes();  // warped layers kept for reuse
   TriangleDestinations destinations = TriangleDestinations::Centroid;
-  SynthesisOptions synthesis;
+  SynthesisOptions synthesis{.warp = {}, .blend = {}, .holes = kDefaultErrorHoles};
   ErrorOptions error;
 };
 

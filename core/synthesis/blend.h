@@ -7,6 +7,9 @@
 
 #include "core/synthesis/warp.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -65,6 +68,26 @@ BlendedPixel blendPixelOf(std::span<const Layer* const> layers, std::span<const 
   result.color = sum / weightSum;
   result.distance = front;
   return result;
+}
+
+// The blended image of layers of any storage (see blendPixelOf).
+template <typename Layer>
+BlendedView blendLayersOf(std::span<const Layer* const> layers, std::span<const float> weights, int width, int height,
+                          const BlendOptions& options) {
+  const size_t pixels = size_t(width) * size_t(height);
+  BlendedView view{ColorImage(width, height), ScalarImage(width, height, std::numeric_limits<float>::infinity()),
+                   std::vector<uint8_t>(pixels, 0), std::vector<uint8_t>(pixels, 0)};
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, pixels, 8192), [&](const tbb::blocked_range<size_t>& range) {
+    for (size_t i = range.begin(); i != range.end(); ++i) {
+      const BlendedPixel pixel = blendPixelOf(layers, weights, i, options);
+      view.hole[i] = pixel.hole;
+      if (pixel.hole) continue;
+      view.color.pixels[i] = pixel.color;
+      view.distance.pixels[i] = pixel.distance;
+      view.contributors[i] = pixel.contributors;
+    }
+  });
+  return view;
 }
 
 BlendedPixel blendPixel(std::span<const WarpLayer* const> layers, std::span<const float> weights, size_t pixel,

@@ -1,5 +1,7 @@
 #include "core/synthesis/view_synthesis.h"
 
+#include <algorithm>
+
 namespace triwalk {
 
 SynthesizedView synthesizeView(std::span<const WarpSource* const> sources, const DestinationCamera& destination,
@@ -14,6 +16,12 @@ SynthesizedView synthesizeView(std::span<const WarpSource* const> sources, const
   std::vector<const WarpLayer*> layers;
   for (const WarpLayer& layer : view.layers) layers.push_back(&layer);
   view.blended = blendLayers(layers, weights, options.blend);
+  if (options.holes == HoleMode::Fill) {
+    view.fill = fillHoles(view.blended, options.blend.epsilon);
+  } else {
+    view.fill.holesBefore = view.fill.unfilled =
+        size_t(std::count(view.blended.hole.begin(), view.blended.hole.end(), uint8_t(1)));
+  }
   return view;
 }
 

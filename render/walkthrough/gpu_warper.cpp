@@ -47,7 +47,11 @@ glm::mat4 pinholeViewProjection(const PinholeCamera& camera, float near) {
 }
 
 GpuWarper::GpuWarper(int width, int height)
-    : layerProgram_("warp_layer.vert", "warp_layer.frag"), resolveProgram_("fullscreen.vert", "warp_resolve.frag") {
+    : layerProgram_("warp_layer.vert", "warp_layer.frag"),
+      resolveProgram_("fullscreen.vert", "warp_resolve.frag"),
+      pushProgram_("fullscreen.vert", "fill_push.frag"),
+      pullProgram_("fullscreen.vert", "fill_pull.frag"),
+      presentProgram_("fullscreen.vert", "warp_present.frag") {
   vertexArray_ = createVertexArray();
   resize(width, height);
 }
@@ -65,6 +69,25 @@ void GpuWarper::resize(int width, int height) {
     glNamedFramebufferTexture(layerFramebuffers_[k].get(), GL_COLOR_ATTACHMENT0, layers_[k].get(), 0);
     glNamedFramebufferTexture(layerFramebuffers_[k].get(), GL_DEPTH_ATTACHMENT, depth_.get(), 0);
     requireCompleteFramebuffer(layerFramebuffers_[k], "warp layer");
+  }
+  const auto linearImage = [](glm::ivec2 size, GlTexture& texture, GlFramebuffer& framebuffer, const char* what) {
+    texture = createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(texture.get(), 1, GL_RGBA16F, size.x, size.y);
+    framebuffer = createFramebuffer();
+    glNamedFramebufferTexture(framebuffer.get(), GL_COLOR_ATTACHMENT0, texture.get(), 0);
+    requireCompleteFramebuffer(framebuffer, what);
+  };
+  linearImage({width, height}, blended_, blendedFramebuffer_, "blend");
+  levelSizes_.assign(1, {width, height});
+  while (levelSizes_.back().x > 1 || levelSizes_.back().y > 1) levelSizes_.push_back((levelSizes_.back() + 1) / 2);
+  const size_t levels = levelSizes_.size();
+  pushed_.resize(levels - 1);
+  pushedFramebuffers_.resize(levels - 1);
+  pulled_.resize(levels - 1);
+  pulledFramebuffers_.resize(levels - 1);
+  for (size_t l = 0; l + 1 < levels; ++l) {
+    linearImage(levelSizes_[l + 1], pushed_[l], pushedFramebuffers_[l], "hole fill push level");
+    linearImage(levelSizes_[l], pulled_[l], pulledFramebuffers_[l], "hole fill pull level");
   }
   output_ = createTexture(GL_TEXTURE_2D);
   glTextureStorage2D(output_.get(), 1, GL_RGBA8, width, height);
@@ -158,7 +181,7 @@ GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<cons
   glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
 
   const auto resolveStart = std::chrono::steady_clock::now();
-  glBindFramebuffer(GL_FRAMEBUFFER, outputFramebuffer_.get());
+  glBindFramebuffer(GL_FRAMEBUFFER, blendedFramebuffer_.get());
   resolveProgram_.use();
   std::vector<glm::vec3> positions;
   for (const GpuPanorama* reference : references) positions.push_back(reference->position());
@@ -173,16 +196,72 @@ GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<cons
   resolveProgram_.set("layerCount", int(references.size()));
   resolveProgram_.set("weights", weightVector);
   resolveProgram_.set("epsilon", settings.blend.epsilon);
-  resolveProgram_.set("holeColor", settings.holeColor);
   resolveProgram_.set("showSources", settings.showSources ? 1 : 0);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   if (timePasses) {
     glFinish();
     statistics.resolveMilliseconds = millisecondsSince(resolveStart);
   }
+
+  lastFrameFilled_ = settings.holes == HoleMode::Fill && !settings.showSources && levelSizes_.size() > 1;
+  if (lastFrameFilled_) {
+    const auto fillStart = std::chrono::steady_clock::now();
+    fillHoles(settings.blend.epsilon);
+    if (timePasses) {
+      glFinish();
+      statistics.fillMilliseconds = millisecondsSince(fillStart);
+    }
+  }
+
+  glViewport(0, 0, width_, height_);
+  glBindFramebuffer(GL_FRAMEBUFFER, outputFramebuffer_.get());
+  presentProgram_.use();
+  presentProgram_.set("image", 2);
+  glBindTextureUnit(2, finalImage());
+  presentProgram_.set("holeColor", holeDisplayColor(settings.holes));
+  glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glBindVertexArray(0);
   return statistics;
+}
+
+void GpuWarper::fillHoles(float epsilon) {
+  const size_t levels = levelSizes_.size();
+  pushProgram_.use();
+  pushProgram_.set("finer", 2);
+  pushProgram_.set("epsilon", epsilon);
+  for (size_t l = 0; l + 1 < levels; ++l) {
+    glViewport(0, 0, levelSizes_[l + 1].x, levelSizes_[l + 1].y);
+    glBindFramebuffer(GL_FRAMEBUFFER, pushedFramebuffers_[l].get());
+    glBindTextureUnit(2, l == 0 ? blended_.get() : pushed_[l - 1].get());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  pullProgram_.use();
+  pullProgram_.set("level", 2);
+  pullProgram_.set("coarser", 3);
+  pullProgram_.set("epsilon", epsilon);
+  for (size_t l = levels - 1; l-- > 0;) {
+    glViewport(0, 0, levelSizes_[l].x, levelSizes_[l].y);
+    glBindFramebuffer(GL_FRAMEBUFFER, pulledFramebuffers_[l].get());
+    glBindTextureUnit(2, l == 0 ? blended_.get() : pushed_[l - 1].get());
+    glBindTextureUnit(3, l + 2 == levels ? pushed_[l].get() : pulled_[l + 1].get());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+}
+
+GLuint GpuWarper::finalImage() const { return lastFrameFilled_ ? pulled_[0].get() : blended_.get(); }
+
+GpuHoleCounts GpuWarper::countHoles() const {
+  GpuHoleCounts counts;
+  counts.pixels = size_t(width_) * size_t(height_);
+  std::vector<glm::vec4> texels(counts.pixels);
+  const auto unknown = [&](GLuint texture) {
+    glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(glm::vec4)), texels.data());
+    return size_t(std::count_if(texels.begin(), texels.end(), [](const glm::vec4& t) { return t.a < 0.0f; }));
+  };
+  counts.holesBefore = unknown(blended_.get());
+  counts.unfilled = unknown(finalImage());
+  return counts;
 }
 
 Rgb8Image GpuWarper::readPixels() const {

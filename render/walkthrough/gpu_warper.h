@@ -4,7 +4,9 @@
 // into its own layer with a depth test (its nearest surface per pixel, as
 // the CPU reference keeps one layer per source); a full-screen resolve pass
 // then blends the layers within epsilon * z_front with the inverse-distance
-// weights and marks holes. One geometry pass per reference (not two over
+// weights into a linear image; the push-pull passes of the hole fill
+// (core/synthesis/hole_fill.h) fill its holes from the background, and a
+// last pass writes display colours (or marks the holes left). One geometry pass per reference (not two over
 // all references) halves the triangles llvmpipe sets up, and matches the
 // CPU reference exactly where a reference overlaps itself. Tiles of the
 // reference grids outside the view frustum are not drawn.
@@ -12,6 +14,7 @@
 #include "core/geometry/projection.h"
 #include "core/image/image.h"
 #include "core/synthesis/blend.h"
+#include "core/synthesis/hole_fill.h"
 #include "render/gl/gl_objects.h"
 #include "render/gl/shader_program.h"
 #include "render/walkthrough/gpu_panorama.h"
@@ -23,8 +26,8 @@ namespace triwalk {
 
 struct GpuWarpSettings {
   BlendOptions blend;
-  glm::vec3 holeColor{1.0f, 0.0f, 1.0f};  // display color; black to hide holes
-  bool showSources = false;               // red, green, blue: which references contributed
+  HoleMode holes = HoleMode::Fill;
+  bool showSources = false;  // red, green, blue: which references contributed (holes not filled)
 };
 
 struct GpuFrameStatistics {
@@ -33,6 +36,12 @@ struct GpuFrameStatistics {
   // With timing requested (glFinish after each pass): milliseconds.
   std::array<double, 3> layerMilliseconds{};
   double resolveMilliseconds = 0.0;
+  double fillMilliseconds = 0.0;  // push-pull passes; 0 when not filling
+};
+
+// Pixels of the last frame that were holes before the fill and are after.
+struct GpuHoleCounts {
+  size_t holesBefore = 0, unfilled = 0, pixels = 0;
 };
 
 class GpuWarper {
@@ -48,18 +57,32 @@ public:
 
   // The last frame, top row first.
   Rgb8Image readPixels() const;
+  // Reads back the blended and the filled images (slow: for statistics).
+  GpuHoleCounts countHoles() const;
   GLuint outputFramebuffer() const { return outputFramebuffer_.get(); }
   GLuint outputTexture() const { return output_.get(); }
 
 private:
   void drawLayer(const PinholeCamera& camera, const GpuPanorama& reference, int layer, GpuFrameStatistics& statistics);
+  void fillHoles(float epsilon);
+  // The texture the present pass shows: the blend, or its filled version.
+  GLuint finalImage() const;
 
   int width_ = 0, height_ = 0;
   ShaderProgram layerProgram_;
   ShaderProgram resolveProgram_;
+  ShaderProgram pushProgram_, pullProgram_, presentProgram_;
   std::array<GlTexture, 3> layers_;
   GlTexture depth_;
   std::array<GlFramebuffer, 3> layerFramebuffers_;
+  // Linear blend (rgb, inverse distance; -1 for holes), then the fill's
+  // pyramid: pushed_[l] is level l + 1, pulled_[l] is level l filled.
+  GlTexture blended_;
+  GlFramebuffer blendedFramebuffer_;
+  std::vector<GlTexture> pushed_, pulled_;
+  std::vector<GlFramebuffer> pushedFramebuffers_, pulledFramebuffers_;
+  std::vector<glm::ivec2> levelSizes_;  // level 0 is the frame
+  bool lastFrameFilled_ = false;
   GlTexture output_;
   GlFramebuffer outputFramebuffer_;
   GlVertexArray vertexArray_;

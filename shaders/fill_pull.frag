@@ -1,0 +1,36 @@
+#version 450 core
+// Pull step of the hole fill: a texel nothing is known at takes the
+// bilinear interpolation of its four nearest coarser texels, only those on
+// the farthest surface (core/synthesis/hole_fill.h); known texels stay.
+#include "projection.glsl"
+#include "hole_fill.glsl"
+uniform sampler2D level;    // this level's pushed values
+uniform sampler2D coarser;  // the coarser level, already filled
+uniform float epsilon;
+out vec4 outValue;
+
+void main() {
+  ivec2 size = textureSize(level, 0);
+  ivec2 coarseSize = textureSize(coarser, 0);
+  ivec2 texel = topDown(ivec2(gl_FragCoord.xy), size);
+  vec4 own = texelFetch(level, topDown(texel, size), 0);
+  if (own.a >= 0.0) {
+    outValue = own;
+    return;
+  }
+  // The texel centre in coarser coordinates is (x + 0.5) / 2 - 0.5: the
+  // nearer coarser texel weighs 3/4 along each axis.
+  ivec2 base = ivec2(texel.x % 2 == 0 ? texel.x / 2 - 1 : texel.x / 2, texel.y % 2 == 0 ? texel.y / 2 - 1 : texel.y / 2);
+  vec2 f = vec2(texel.x % 2 == 0 ? 0.75 : 0.25, texel.y % 2 == 0 ? 0.75 : 0.25);
+  vec4 parents[4];
+  float weights[4];
+  int count = 0;
+  for (int dy = 0; dy < 2; ++dy) {
+    for (int dx = 0; dx < 2; ++dx) {
+      ivec2 parent = clamp(base + ivec2(dx, dy), ivec2(0), coarseSize - 1);
+      parents[count] = texelFetch(coarser, topDown(parent, coarseSize), 0);
+      weights[count++] = (dx == 0 ? 1.0 - f.x : f.x) * (dy == 0 ? 1.0 - f.y : f.y);
+    }
+  }
+  outValue = farthestSurfaceMean(parents, weights, count, epsilon);
+}

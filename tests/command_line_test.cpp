@@ -6,9 +6,11 @@
 #include "tests/test_support.h"
 
 #include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdlib>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -111,6 +113,34 @@ TEST_CASE("SIGTERM stops decimate and eval cleanly, with no partial output") {
     CHECK_FALSE(std::filesystem::exists(rows));
     for (const auto& entry : std::filesystem::directory_iterator(directory.path())) {
       CHECK(entry.path().filename().string().find(".tmp-") == std::string::npos);
+    }
+  }
+}
+
+
+TEST_CASE("render --stats reports per frame the holes before the fill, none left after it, and the frame time") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 3, 3, 128, 0);
+  // Behind the box at x 3..3.8, y -1.5..-0.9, outside the samples (y >= 0):
+  // the wall and the box face it hides from every reference are holes.
+  std::ofstream(directory / "path.txt") << "3.4 -1.8 1.5 270 -10\n3.4 -1.8 1.5 0 -10\n";
+  const std::string common = "render --dataset " + (directory / "data").string() + " --path " +
+                             (directory / "path.txt").string() + " --size 160x120 --out " + (directory / "frames").string();
+  for (const std::string holes : {"fill", "mark"}) {
+    const std::filesystem::path stats = directory / ("stats_" + holes + ".json");
+    const RunResult run = runTriwalk(directory, common + " --holes " + holes + " --stats " + stats.string());
+    INFO(run.err);
+    REQUIRE(run.status == 0);
+    CHECK(run.out.find("(holes " + holes + ")") != std::string::npos);
+    const nlohmann::json document = nlohmann::json::parse(testing::readTextFileOrEmpty(stats));
+    CHECK(document["holes"] == holes);
+    REQUIRE(document["frames"].size() == 2);
+    for (size_t i = 0; i < 2; ++i) {
+      const nlohmann::json& frame = document["frames"][i];
+      CHECK(frame["frame"] == i);
+      CHECK(frame["holes_before_fill"].get<double>() > 0.001);
+      CHECK(frame["unfilled"].get<double>() == (holes == "fill" ? 0.0 : frame["holes_before_fill"].get<double>()));
+      CHECK(frame["ms"].get<double>() > 0.0);
     }
   }
 }

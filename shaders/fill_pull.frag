@@ -2,12 +2,16 @@
 // Pull step of the hole fill: a texel nothing is known at takes the
 // bilinear interpolation of its four nearest coarser texels, only those on
 // the farthest surface (core/synthesis/hole_fill.h); known texels stay.
+// At the frame's level the pass runs on its holes only (a depth test
+// against the resolve's hole mark) and also writes their display colour.
 #include "projection.glsl"
+#include "display.glsl"
 #include "hole_fill.glsl"
 uniform sampler2D level;    // this level's pushed values
 uniform sampler2D coarser;  // the coarser level, already filled
 uniform float epsilon;
-out vec4 outValue;
+layout(location = 0) out vec4 outValue;
+layout(location = 1) out vec4 outColor;  // the frame's level only: black if nothing at all is known
 
 void main() {
   ivec2 size = textureSize(level, 0);
@@ -16,6 +20,7 @@ void main() {
   vec4 own = texelFetch(level, topDown(texel, size), 0);
   if (own.a >= 0.0) {
     outValue = own;
+    outColor = displayColor(own.rgb);
     return;
   }
   // The texel centre in coarser coordinates is (x + 0.5) / 2 - 0.5: the
@@ -33,4 +38,5 @@ void main() {
     }
   }
   outValue = farthestSurfaceMean(parents, weights, count, epsilon);
+  outColor = outValue.a < 0.0 ? vec4(0.0, 0.0, 0.0, 1.0) : displayColor(outValue.rgb);
 }

@@ -3,9 +3,12 @@
 // rule as core/synthesis/blend.cpp): z_front is the nearest distance over layers,
 // layers within epsilon * z_front of it average with weights
 // 1 / max(dist(D, S_k), r_min); pixels no layer covers are holes.
-// Writes linear colour and the inverse distance of z_front (0 for sky,
-// -1 for holes), for the hole fill and warp_present.frag.
+// Writes the linear colour and the inverse distance of z_front (0 for sky,
+// -1 for holes) for the hole fill, the frame's display colour (holeColor
+// in holes), and depth 1 in holes, 0 elsewhere, so that the fill's last
+// pass runs on the holes alone.
 #include "projection.glsl"
+#include "display.glsl"
 uniform sampler2D layer0;
 uniform sampler2D layer1;
 uniform sampler2D layer2;
@@ -13,7 +16,9 @@ uniform int layerCount;
 uniform vec3 weights;
 uniform float epsilon;
 uniform bool showSources;   // color by the references that contributed
-out vec4 outValue;
+uniform vec3 holeColor;     // display colour
+layout(location = 0) out vec4 outValue;
+layout(location = 1) out vec4 outColor;
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -27,6 +32,8 @@ void main() {
   }
   if (!covered) {
     outValue = vec4(0.0, 0.0, 0.0, -1.0);
+    outColor = vec4(holeColor, 1.0);
+    gl_FragDepth = 1.0;
     return;
   }
   vec3 sum = vec3(0.0);
@@ -43,4 +50,6 @@ void main() {
   }
   float inverseFront = isinf(front) ? 0.0 : 1.0 / front;
   outValue = vec4(showSources ? sources : sum / weightSum, inverseFront);
+  outColor = displayColor(outValue.rgb);
+  gl_FragDepth = 0.0;
 }

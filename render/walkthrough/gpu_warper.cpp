@@ -50,8 +50,7 @@ GpuWarper::GpuWarper(int width, int height)
     : layerProgram_("warp_layer.vert", "warp_layer.frag"),
       resolveProgram_("fullscreen.vert", "warp_resolve.frag"),
       pushProgram_("fullscreen.vert", "fill_push.frag"),
-      pullProgram_("fullscreen.vert", "fill_pull.frag"),
-      presentProgram_("fullscreen.vert", "warp_present.frag") {
+      pullProgram_("fullscreen.vert", "fill_pull.frag") {
   vertexArray_ = createVertexArray();
   resize(width, height);
 }
@@ -70,11 +69,27 @@ void GpuWarper::resize(int width, int height) {
     glNamedFramebufferTexture(layerFramebuffers_[k].get(), GL_DEPTH_ATTACHMENT, depth_.get(), 0);
     requireCompleteFramebuffer(layerFramebuffers_[k], "warp layer");
   }
-  const auto linearImage = [](glm::ivec2 size, GlTexture& texture, GlFramebuffer& framebuffer, const char* what) {
+  output_ = createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(output_.get(), 1, GL_RGBA8, width, height);
+  glTextureParameteri(output_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(output_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  outputFramebuffer_ = createFramebuffer();
+  glNamedFramebufferTexture(outputFramebuffer_.get(), GL_COLOR_ATTACHMENT0, output_.get(), 0);
+  requireCompleteFramebuffer(outputFramebuffer_, "warp output");
+
+  // A linear image; at the frame's size its framebuffer also writes the
+  // display colours into output_ and tests against (or writes) depth_.
+  const auto linearImage = [&](glm::ivec2 size, GlTexture& texture, GlFramebuffer& framebuffer, const char* what) {
     texture = createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(texture.get(), 1, GL_RGBA16F, size.x, size.y);
     framebuffer = createFramebuffer();
     glNamedFramebufferTexture(framebuffer.get(), GL_COLOR_ATTACHMENT0, texture.get(), 0);
+    if (size == glm::ivec2(width, height)) {
+      glNamedFramebufferTexture(framebuffer.get(), GL_COLOR_ATTACHMENT1, output_.get(), 0);
+      glNamedFramebufferTexture(framebuffer.get(), GL_DEPTH_ATTACHMENT, depth_.get(), 0);
+      const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+      glNamedFramebufferDrawBuffers(framebuffer.get(), 2, buffers);
+    }
     requireCompleteFramebuffer(framebuffer, what);
   };
   linearImage({width, height}, blended_, blendedFramebuffer_, "blend");
@@ -89,13 +104,6 @@ void GpuWarper::resize(int width, int height) {
     linearImage(levelSizes_[l + 1], pushed_[l], pushedFramebuffers_[l], "hole fill push level");
     linearImage(levelSizes_[l], pulled_[l], pulledFramebuffers_[l], "hole fill pull level");
   }
-  output_ = createTexture(GL_TEXTURE_2D);
-  glTextureStorage2D(output_.get(), 1, GL_RGBA8, width, height);
-  glTextureParameteri(output_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(output_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  outputFramebuffer_ = createFramebuffer();
-  glNamedFramebufferTexture(outputFramebuffer_.get(), GL_COLOR_ATTACHMENT0, output_.get(), 0);
-  requireCompleteFramebuffer(outputFramebuffer_, "warp output");
 }
 
 void GpuWarper::drawLayer(const PinholeCamera& camera, const GpuPanorama& reference, int layer,
@@ -182,6 +190,8 @@ GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<cons
 
   const auto resolveStart = std::chrono::steady_clock::now();
   glBindFramebuffer(GL_FRAMEBUFFER, blendedFramebuffer_.get());
+  glEnable(GL_DEPTH_TEST);  // depth writes need the test on: every pixel writes its hole mark
+  glDepthFunc(GL_ALWAYS);
   resolveProgram_.use();
   std::vector<glm::vec3> positions;
   for (const GpuPanorama* reference : references) positions.push_back(reference->position());
@@ -197,7 +207,10 @@ GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<cons
   resolveProgram_.set("weights", weightVector);
   resolveProgram_.set("epsilon", settings.blend.epsilon);
   resolveProgram_.set("showSources", settings.showSources ? 1 : 0);
+  resolveProgram_.set("holeColor", holeDisplayColor(settings.holes));
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
   if (timePasses) {
     glFinish();
     statistics.resolveMilliseconds = millisecondsSince(resolveStart);
@@ -212,14 +225,7 @@ GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<cons
       statistics.fillMilliseconds = millisecondsSince(fillStart);
     }
   }
-
   glViewport(0, 0, width_, height_);
-  glBindFramebuffer(GL_FRAMEBUFFER, outputFramebuffer_.get());
-  presentProgram_.use();
-  presentProgram_.set("image", 2);
-  glBindTextureUnit(2, finalImage());
-  presentProgram_.set("holeColor", holeDisplayColor(settings.holes));
-  glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glBindVertexArray(0);
   return statistics;
@@ -245,22 +251,32 @@ void GpuWarper::fillHoles(float epsilon) {
     glBindFramebuffer(GL_FRAMEBUFFER, pulledFramebuffers_[l].get());
     glBindTextureUnit(2, l == 0 ? blended_.get() : pushed_[l - 1].get());
     glBindTextureUnit(3, l + 2 == levels ? pushed_[l].get() : pulled_[l + 1].get());
+    if (l == 0) {
+      // The full-screen triangle lies at depth 0.5: it passes where the
+      // resolve marked a hole (1) and nowhere else (0).
+      glEnable(GL_DEPTH_TEST);
+      glDepthMask(GL_FALSE);
+    }
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_TRUE);
 }
-
-GLuint GpuWarper::finalImage() const { return lastFrameFilled_ ? pulled_[0].get() : blended_.get(); }
 
 GpuHoleCounts GpuWarper::countHoles() const {
   GpuHoleCounts counts;
   counts.pixels = size_t(width_) * size_t(height_);
-  std::vector<glm::vec4> texels(counts.pixels);
-  const auto unknown = [&](GLuint texture) {
-    glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(glm::vec4)), texels.data());
-    return size_t(std::count_if(texels.begin(), texels.end(), [](const glm::vec4& t) { return t.a < 0.0f; }));
-  };
-  counts.holesBefore = unknown(blended_.get());
-  counts.unfilled = unknown(finalImage());
+  std::vector<glm::vec4> blended(counts.pixels);
+  glGetTextureImage(blended_.get(), 0, GL_RGBA, GL_FLOAT, GLsizei(blended.size() * sizeof(glm::vec4)), blended.data());
+  counts.holesBefore = size_t(std::count_if(blended.begin(), blended.end(), [](const glm::vec4& t) { return t.a < 0.0f; }));
+  counts.unfilled = counts.holesBefore;
+  if (lastFrameFilled_) {
+    // Pulled level 0 holds the fill at the holes (and stale texels elsewhere).
+    std::vector<glm::vec4> filled(counts.pixels);
+    glGetTextureImage(pulled_[0].get(), 0, GL_RGBA, GL_FLOAT, GLsizei(filled.size() * sizeof(glm::vec4)), filled.data());
+    counts.unfilled = 0;
+    for (size_t i = 0; i < counts.pixels; ++i) counts.unfilled += blended[i].a < 0.0f && filled[i].a < 0.0f;
+  }
   return counts;
 }
 

@@ -4,9 +4,10 @@
 // into its own layer with a depth test (its nearest surface per pixel, as
 // the CPU reference keeps one layer per source); a full-screen resolve pass
 // then blends the layers within epsilon * z_front with the inverse-distance
-// weights into a linear image; the push-pull passes of the hole fill
-// (core/synthesis/hole_fill.h) fill its holes from the background, and a
-// last pass writes display colours (or marks the holes left). One geometry pass per reference (not two over
+// weights into a linear image and the frame's display colours (holes
+// marked, black, or left for the fill); the push-pull passes of the hole
+// fill (core/synthesis/hole_fill.h) then fill the holes from the
+// background, the last one on the hole pixels alone. One geometry pass per reference (not two over
 // all references) halves the triangles llvmpipe sets up, and matches the
 // CPU reference exactly where a reference overlaps itself. Tiles of the
 // reference grids outside the view frustum are not drawn.
@@ -65,18 +66,18 @@ public:
 private:
   void drawLayer(const PinholeCamera& camera, const GpuPanorama& reference, int layer, GpuFrameStatistics& statistics);
   void fillHoles(float epsilon);
-  // The texture the present pass shows: the blend, or its filled version.
-  GLuint finalImage() const;
 
   int width_ = 0, height_ = 0;
   ShaderProgram layerProgram_;
   ShaderProgram resolveProgram_;
-  ShaderProgram pushProgram_, pullProgram_, presentProgram_;
+  ShaderProgram pushProgram_, pullProgram_;
   std::array<GlTexture, 3> layers_;
   GlTexture depth_;
   std::array<GlFramebuffer, 3> layerFramebuffers_;
   // Linear blend (rgb, inverse distance; -1 for holes), then the fill's
-  // pyramid: pushed_[l] is level l + 1, pulled_[l] is level l filled.
+  // pyramid: pushed_[l] is level l + 1, pulled_[l] is level l filled (at
+  // level 0 only the holes are written). The resolve's framebuffer also
+  // writes output_ and marks holes in depth_; so does pulled level 0's.
   GlTexture blended_;
   GlFramebuffer blendedFramebuffer_;
   std::vector<GlTexture> pushed_, pulled_;

@@ -133,4 +133,39 @@ TEST_CASE("the served-sample cost ranks collapses by what they do to the probes 
   CHECK(servedAgreement > 0.7);
 }
 
+
+TEST_CASE("--relative-error stops where R times the dense mean triangle error says, on a tiny data set") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 4, 4, 32, 0);
+  const Dataset dataset = Dataset::open(directory / "data");
+  TriangleErrorSettings errorSettings;
+  errorSettings.width = 32;
+  DatasetTriangleErrors errors(dataset, errorSettings, true);
+  const ViewMesh dense = ViewMesh::delaunay(samplePositions(dataset), {}, "test");
+  std::vector<double> denseErrors(dense.triangles().size());
+  errors.computeErrors(dense.triangles(), denseErrors);
+  const double denseMean = std::accumulate(denseErrors.begin(), denseErrors.end(), 0.0) / double(denseErrors.size());
+
+  std::map<double, size_t> kept;
+  for (const double ratio : {0.9, 1.0, 100.0}) {
+    SelectionSettings settings;
+    settings.relativeError = ratio;
+    settings.decimation.maxError = 0.0;
+    settings.refinement.radius = 0.0;
+    const SelectionRun run = selectReferences(dataset, errors, settings, true);
+    CAPTURE(ratio);
+    CHECK(run.denseMeanError == doctest::Approx(denseMean));
+    CHECK(run.maxError == doctest::Approx(ratio * denseMean));
+    // No collapse above the threshold was made, and the one that stopped
+    // the decimation was above it.
+    for (const Collapse& collapse : run.selection.collapses) CHECK(collapse.error <= run.maxError);
+    if (run.stopReason == StopReason::MaxError) CHECK(run.selection.nextCost > run.maxError);
+    kept[ratio] = run.selection.samples.size();
+  }
+  MESSAGE("samples kept at R = 0.9, 1.0, 100: ", kept[0.9], ", ", kept[1.0], ", ", kept[100.0]);
+  // A looser target keeps fewer samples, down to the hull's four corners.
+  CHECK(kept[0.9] > kept[1.0]);
+  CHECK(kept[1.0] > kept[100.0]);
+  CHECK(kept[100.0] == 4);
+}
 }  // namespace triwalk

@@ -16,7 +16,7 @@ namespace triwalk {
 void registerDecimateCommand(CLI::App& app) {
   struct Arguments {
     std::string dataset, out;
-    double maxError = DecimationOptions{}.maxError;
+    double maxError = 0.0, relativeError = 0.0;
     int target = 0;
     bool quiet = false;
     SelectionArguments selection;
@@ -26,18 +26,24 @@ void registerDecimateCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("decimate", "Select reference samples by edge-collapse decimation");
   command->add_option("--dataset", arguments->dataset, "Data set directory")->required();
   command->add_option("--out", arguments->out, "Selection file to write (selection.json)")->required()->check(writableFile());
-  command->add_option("--max-error", arguments->maxError,
-                      "Stop before a collapse whose cost exceeds this (the paper's 1.85); 0 disables")
-      ->capture_default_str()->check(nonNegativeNumber());
-  command->add_option("--target", arguments->target, "Stop at this many samples; 0 disables")
-      ->capture_default_str()->check(nonNegativeNumber());
+  CLI::Option* maxError = command->add_option(
+      "--max-error", arguments->maxError, "Stop before a collapse whose error exceeds this absolute value (the paper's 1.85)")
+      ->check(positiveNumber());
+  char relativeHelp[256];
+  std::snprintf(relativeHelp, sizeof relativeHelp,
+                "Stop before a collapse whose error exceeds this many times the dense triangulation's mean triangle error "
+                "(default %.2f, the paper's ratio, unless --max-error or --target is given)",
+                kDefaultRelativeError);
+  command->add_option("--relative-error", arguments->relativeError, relativeHelp)
+      ->check(positiveNumber())->excludes(maxError);
+  command->add_option("--target", arguments->target, "Stop at this many samples (alone: no error threshold)")
+      ->check(nonNegativeNumber());
   addSelectionOptions(*command, arguments->selection);
   command->add_flag("--quiet", arguments->quiet, "No progress output");
   addErrorOptions(*command, arguments->errors);
 
   command->callback([arguments] {
     const Arguments& a = *arguments;
-    if (a.maxError <= 0.0 && a.target == 0) throw InputError("decimate", "give --max-error, --target or both");
     if (a.target == 1 || a.target == 2) throw InputError("--target", "a triangle needs at least 3 samples");
     const Dataset dataset = Dataset::open(a.dataset);
     if (a.target > dataset.sampleCount()) {
@@ -49,8 +55,15 @@ void registerDecimateCommand(CLI::App& app) {
 
     InterruptScope interruptScope;
     DatasetTriangleErrors errors(dataset, settings, a.quiet);
-    const SelectionSettings selection = selectionSettings(a.selection, a.maxError, a.target);
+    SelectionSettings selection = selectionSettings(a.selection, a.maxError, a.target);
+    const bool noGoal = a.maxError <= 0.0 && a.relativeError <= 0.0 && a.target == 0;
+    selection.relativeError = noGoal ? kDefaultRelativeError : a.relativeError;
     SelectionRun run = selectReferences(dataset, errors, selection, a.quiet);
+    if (selection.relativeError > 0.0) {
+      std::printf("error threshold: %.2f x the dense triangulation's mean triangle error %.4f = %.4f\n",
+                  selection.relativeError, run.denseMeanError, run.maxError);
+    }
+    selection.decimation.maxError = run.maxError;
 
     run.selection.settings = describeSelectionSettings(selection, settings);
     writeSelection(a.out, run.selection, dataset);

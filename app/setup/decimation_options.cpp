@@ -68,6 +68,7 @@ SelectionSettings selectionSettings(const SelectionArguments& arguments, double 
 nlohmann::json describeSelectionSettings(const SelectionSettings& settings, const TriangleErrorSettings& errors) {
   const DecimationOptions& options = settings.decimation;
   return {{"max_error", options.maxError},
+          {"relative_error", settings.relativeError},
           {"target", options.targetSamples},
           {"one_ring", options.oneRingCandidates},
           {"cost", collapseCostName(options.cost)},

@@ -3,9 +3,28 @@
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace triwalk {
+
+double meanTriangleError(TriangleErrorSource& errors, const std::vector<Triangle>& triangles, bool quiet) {
+  TRIWALK_CHECK(!triangles.empty(), "no triangles to measure");
+  // In chunks, for progress and a prompt stop on Ctrl-C.
+  constexpr size_t kChunk = 32;
+  std::vector<double> values(triangles.size());
+  ProgressReporter progress("dense triangle errors", triangles.size(), quiet);
+  for (size_t begin = 0; begin < triangles.size(); begin += kChunk) {
+    throwIfInterrupted();
+    const size_t count = std::min(kChunk, triangles.size() - begin);
+    errors.computeErrors(std::span(triangles).subspan(begin, count), std::span(values).subspan(begin, count));
+    progress.advance(count);
+  }
+  progress.finish();
+  double sum = 0.0;
+  for (double value : values) sum += value;
+  return sum / double(values.size());
+}
 
 SelectionRun selectReferences(const Dataset& dataset, DatasetTriangleErrors& errors, const SelectionSettings& requested,
                               bool quiet) {
@@ -18,6 +37,11 @@ SelectionRun selectReferences(const Dataset& dataset, DatasetTriangleErrors& err
     settings.refinement.sampleWeights = weights;
   }
   run.initialSamples = initial.vertexCount();
+  if (settings.relativeError > 0.0) {
+    run.denseMeanError = meanTriangleError(errors, initial.triangles(), quiet);
+    settings.decimation.maxError = settings.relativeError * run.denseMeanError;
+  }
+  run.maxError = settings.decimation.maxError;
   // One cache of dense-sample errors serves the collapses and the
   // refinement, which starts from the errors the collapses left.
   CachingReconstructionErrors sampleErrors(errors);

@@ -12,8 +12,18 @@
 
 namespace triwalk {
 
+// The quality target when none is given: stop before a collapse whose
+// error exceeds this many times the dense triangulation's mean triangle
+// error (docs/RESULTS.md, "A quality target for any scene").
+inline constexpr double kDefaultRelativeError = 1.36;
+
 struct SelectionSettings {
   DecimationOptions decimation;
+  // > 0: decimation.maxError becomes this times the dense triangulation's
+  // mean triangle error (Table 1's "initial (a)"), measured first. The
+  // paper's 1.85 over its dense 1.36 is 1.36; an absolute error means
+  // nothing across scenes whose lighting and texture differ.
+  double relativeError = 0.0;
   RefinementOptions refinement;
   // Weigh each dense sample by its share of the walkable region (see
   // sampleAreaWeights) in the served-sample cost and the refinement.
@@ -27,10 +37,16 @@ struct SelectionRun {
   RefinementResult refinement;
   size_t collapses = 0;
   int initialSamples = 0;
+  double denseMeanError = 0.0;  // measured when a relative error was asked
+  double maxError = 0.0;        // the absolute threshold used (0: none)
   double costingSeconds = 0.0;   // the first costing of every edge
   double collapseSeconds = 0.0;  // costing included
   double refinementSeconds = 0.0;
 };
+
+// The mean error of triangles (unweighted, as Table 1's mean error column),
+// in chunks with progress; stops on Ctrl-C (Interrupted).
+double meanTriangleError(TriangleErrorSource& errors, const std::vector<Triangle>& triangles, bool quiet);
 
 // errors: the data set's panoramas at the error width.
 SelectionRun selectReferences(const Dataset& dataset, DatasetTriangleErrors& errors, const SelectionSettings& settings,

@@ -44,7 +44,11 @@ TEST_CASE("bad options fail in one line naming the option, before any work, and 
   const std::vector<Case> cases = {
       {"decimate" + data + " --out " + selection + " --max-error nan", "--max-error: must be a finite number, got nan"},
       {"decimate" + data + " --out " + selection + " --max-error inf", "--max-error: must be a finite number, got inf"},
-      {"decimate" + data + " --out " + selection + " --max-error -1", "--max-error: must not be negative, got -1"},
+      {"decimate" + data + " --out " + selection + " --max-error -1", "--max-error: must be positive, got -1"},
+      {"decimate" + data + " --out " + selection + " --relative-error 0", "--relative-error: must be positive, got 0"},
+      {"decimate" + data + " --out " + selection + " --relative-error nan", "--relative-error: must be a finite number, got nan"},
+      {"decimate" + data + " --out " + selection + " --max-error 1.5 --relative-error 1.2",
+       "--max-error excludes --relative-error"},
       {"decimate" + data + " --out " + selection + " --refine-radius NaN", "--refine-radius: must be a finite number"},
       {"decimate" + data + " --out /nonexistent/folder/selection.json --target 4", "--out: cannot write /nonexistent/folder"},
       {"decimate" + data + " --out " + (directory / "data").string() + " --target 4", "is a folder, not a file"},
@@ -53,7 +57,7 @@ TEST_CASE("bad options fail in one line naming the option, before any work, and 
       {"render" + data + " --out " + frames + " --fov nan", "--fov: must be a finite number"},
       {"render" + data + " --out " + frames + " --pitch -inf", "--pitch: must be a finite number"},
       {"render" + data + " --out /proc/version/frames", "--out: cannot create folder /proc/version/frames"},
-      {"capture --out " + (directory / "new").string() + " --spacing nan", "--spacing: must be positive, got nan"},
+      {"capture --out " + (directory / "new").string() + " --spacing nan", "--spacing: must be a finite number, got nan"},
       {"capture --out " + (directory / "new").string() + " --area 0,0,nan,1", "--area: must be a finite number"},
       {"eval" + data + " --selection " + selection + " --json /nonexistent/rows.json", "--json: cannot write"},
   };

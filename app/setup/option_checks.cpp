@@ -41,7 +41,8 @@ CLI::Validator nonNegativeNumber() {
   return CLI::Validator(
       [](std::string& text) {
         const std::optional<double> value = numberIn(text);
-        return value && *value < 0.0 ? "must not be negative, got " + text : std::string();
+        // NaN and infinities are left to hardenCommandLine's finite check.
+        return value && std::isfinite(*value) && *value < 0.0 ? "must not be negative, got " + text : std::string();
       },
       "NONNEGATIVE");
 }
@@ -50,7 +51,7 @@ CLI::Validator positiveNumber() {
   return CLI::Validator(
       [](std::string& text) {
         const std::optional<double> value = numberIn(text);
-        return value && !(*value > 0.0) ? "must be positive, got " + text : std::string();
+        return value && std::isfinite(*value) && !(*value > 0.0) ? "must be positive, got " + text : std::string();
       },
       "POSITIVE");
 }

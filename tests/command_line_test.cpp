@@ -121,6 +121,26 @@ TEST_CASE("SIGTERM stops decimate and eval cleanly, with no partial output") {
   }
 }
 
+TEST_CASE("SIGTERM stops capture while it searches an imported scene for its walkable area") {
+  const std::filesystem::path house = "/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc";
+  REQUIRE_MESSAGE(std::filesystem::exists(house), "install assimp-testmodels (scripts/install-deps.sh test)");
+  testing::TemporaryDirectory directory;
+  const std::filesystem::path out = directory / "house", status = directory / "status.txt";
+  // The search probes about 1150 positions (over 10 s here); the signal
+  // comes once its progress line shows (after the import, however long
+  // that takes under the sanitizers).
+  const std::string log = (directory / "log.txt").string();
+  const std::string script = std::string(TRIWALK_BINARY) + " capture --scene " + house.string() + " --out " + out.string() +
+                             " --width 64 --probes 2 > " + log + " 2>&1 & pid=$!; for i in $(seq 600); do grep -q \"find walkable\" " +
+                             log + " && break; sleep 0.1; done; kill -TERM $pid; wait $pid; echo $? > " + status.string();
+  REQUIRE(std::system(("bash -c '" + script + "'").c_str()) == 0);
+  const std::string printed = testing::readTextFileOrEmpty(log);
+  INFO("log: " << printed);
+  CHECK(printed.find("find walkable area: positions probed") != std::string::npos);
+  CHECK(std::stoi(testing::readTextFileOrEmpty(status)) == 130);
+  CHECK(printed.find("triwalk: interrupted; no output written") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(out));
+}
 
 TEST_CASE("render --stats reports per frame the holes before the fill, none left after it, and the frame time") {
   testing::TemporaryDirectory directory;

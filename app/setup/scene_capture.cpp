@@ -12,7 +12,7 @@ CaptureSummary captureScene(const SceneCaptureRequest& request) {
   auto context = createHeadlessContext(parseHeadlessBackend(request.gl));
   if (request.autoArea || (loaded.imported && !request.options.area)) {
     const float eyeHeight = request.options.eyeHeight.value_or(loaded.scene.walkableArea.eyeHeight);
-    const WalkableAreaProposal proposal = proposeWalkableArea(loaded.scene, eyeHeight, 0.5f, request.scene);
+    const WalkableAreaProposal proposal = proposeWalkableArea(loaded.scene, eyeHeight, 0.5f, request.scene, request.options.quiet);
     std::printf("%s\n", proposal.reason.c_str());
     loaded.scene.walkableArea.min = {proposal.area.x, proposal.area.y};
     loaded.scene.walkableArea.max = {proposal.area.z, proposal.area.w};

@@ -1,6 +1,7 @@
 #include "render/capture/walkable_area.h"
 
 #include "core/support/errors.h"
+#include "core/support/progress.h"
 
 #include <algorithm>
 #include <cmath>
@@ -74,7 +75,8 @@ float dominantFloorHeight(const Scene& scene) {
   return float(largest->first) * 0.05f;
 }
 
-WalkableAreaProposal proposeWalkableArea(const Scene& scene, float eyeHeight, float spacing, const std::string& subject) {
+WalkableAreaProposal proposeWalkableArea(const Scene& scene, float eyeHeight, float spacing, const std::string& subject,
+                                         bool quiet) {
   glm::vec3 lower, upper;
   scene.bounds(lower, upper);
   // Candidate floors: each spawn point's, or the dominant one.
@@ -88,6 +90,25 @@ WalkableAreaProposal proposeWalkableArea(const Scene& scene, float eyeHeight, fl
 
   PanoramaCapturer capturer(scene, 32, 16);
   const int columns = std::max(1, int((upper.x - lower.x) / spacing)), rows = std::max(1, int((upper.y - lower.y) / spacing));
+  const auto positionAt = [&](int x, int y, float floor) {
+    return glm::vec3(lower.x + (float(x) + 0.5f) * spacing, lower.y + (float(y) + 0.5f) * spacing, floor + eyeHeight);
+  };
+  // On a spawn floor, only around that floor's spawn points.
+  const auto worthProbing = [&](glm::vec3 position, float floor) {
+    return !fromSpawns || std::any_of(scene.spawnPoints.begin(), scene.spawnPoints.end(), [&](const glm::vec3& spawn) {
+      return std::abs(spawn.z - kSpawnAboveFloor - floor) < 0.3f && glm::length(glm::vec2(spawn - position)) < kSpawnReach;
+    });
+  };
+  size_t toProbe = 0;
+  for (float floor : floors) {
+    for (int y = 0; y < rows; ++y) {
+      for (int x = 0; x < columns; ++x) toProbe += worthProbing(positionAt(x, y, floor), floor);
+    }
+  }
+  // A level without spawn points is probed over its whole bounding box:
+  // minutes on a large one, so it shows progress and stops on Ctrl-C.
+  InterruptScope interruptScope;
+  ProgressReporter progress("find walkable area: positions probed", toProbe, quiet);
   WalkableAreaProposal best;
   int bestCells = 0;
   for (float floor : floors) {
@@ -95,13 +116,11 @@ WalkableAreaProposal proposeWalkableArea(const Scene& scene, float eyeHeight, fl
     int count = 0, probed = 0;
     for (int y = 0; y < rows; ++y) {
       for (int x = 0; x < columns; ++x) {
-        const glm::vec3 position(lower.x + (float(x) + 0.5f) * spacing, lower.y + (float(y) + 0.5f) * spacing, floor + eyeHeight);
-        // On a spawn floor, only around that floor's spawn points.
-        const bool nearSpawn = std::any_of(scene.spawnPoints.begin(), scene.spawnPoints.end(), [&](const glm::vec3& spawn) {
-          return std::abs(spawn.z - kSpawnAboveFloor - floor) < 0.3f && glm::length(glm::vec2(spawn - position)) < kSpawnReach;
-        });
-        if (fromSpawns && !nearSpawn) continue;
+        const glm::vec3 position = positionAt(x, y, floor);
+        if (!worthProbing(position, floor)) continue;
+        throwIfInterrupted();
         const bool ok = walkableView(capturer.capture(position), eyeHeight);
+        progress.advance();
         walkable[size_t(y)][size_t(x)] = ok;
         count += ok;
         ++probed;
@@ -117,6 +136,7 @@ WalkableAreaProposal proposeWalkableArea(const Scene& scene, float eyeHeight, fl
     best.walkableCells = count;
     best.probedCells = probed;
   }
+  progress.finish();
   if (bestCells == 0) {
     throw InputError(subject, "no walkable area found automatically (no enclosed positions with a floor at eye height); "
                               "give --area and --eye-height");

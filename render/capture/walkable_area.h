@@ -26,7 +26,8 @@ struct WalkableAreaProposal {
 
 // Needs a current GL context. eyeHeight in metres above the floor;
 // spacing is the probe grid's. Throws InputError when nothing is walkable.
-WalkableAreaProposal proposeWalkableArea(const Scene& scene, float eyeHeight, float spacing, const std::string& subject);
+WalkableAreaProposal proposeWalkableArea(const Scene& scene, float eyeHeight, float spacing, const std::string& subject,
+                                         bool quiet = false);
 
 // The height of the largest upward-facing surface area (the main floor).
 float dominantFloorHeight(const Scene& scene);

@@ -23,13 +23,28 @@ namespace {
 constexpr const char* kColorChannels[3] = {"R", "G", "B"};
 constexpr const char* kDistanceChannel = "Z";
 
-// OpenEXR allocates and clears every header attribute at the size the file
-// claims before it notices the file is shorter, so a 200-byte file can cost
-// seconds (found by fuzzing). This walks the first header's attribute
-// records (name, type, 32-bit size, value) and refuses a size that runs
-// past the end of the file; it reads no attribute and leaves all decoding
-// to OpenEXR.
-void checkHeaderAttributeSizes(const std::filesystem::path& path) {
+int32_t littleEndian32(const uint8_t bytes[4]) {
+  return int32_t(uint32_t(bytes[0]) | uint32_t(bytes[1]) << 8 | uint32_t(bytes[2]) << 16 | uint32_t(bytes[3]) << 24);
+}
+
+// A data window triwalk reads: not empty, at most kMaxPanoramaWidth wide
+// and half that high (computed in 64 bits: a hostile window overflows int).
+void checkWindowSize(const std::string& name, int64_t width, int64_t height) {
+  if (width <= 0 || height <= 0) throw InputError(name, "empty image");
+  if (width > kMaxPanoramaWidth || height > kMaxPanoramaWidth / 2) {
+    throw InputError(name, "size " + std::to_string(width) + "x" + std::to_string(height) + " is larger than triwalk reads (" +
+                               std::to_string(kMaxPanoramaWidth) + "x" + std::to_string(kMaxPanoramaWidth / 2) + ")");
+  }
+}
+
+// OpenEXR allocates and clears memory for what the header claims before it
+// notices the file cannot hold it: every attribute at its stated size, and
+// per-line tables for the data window, so a 200-byte file can cost seconds
+// (both found by fuzzing). This walks the first header's attribute records
+// (name, type, 32-bit size, value), refuses a size that runs past the end
+// of the file and checks every dataWindow's size; all decoding stays with
+// OpenEXR.
+void checkHeaderBeforeOpenExr(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   const auto fileSize = int64_t(std::filesystem::file_size(path));
   constexpr int64_t kMagicAndVersion = 8;
@@ -48,12 +63,18 @@ void checkHeaderAttributeSizes(const std::filesystem::path& path) {
   while (readString(attribute) && !attribute.empty() && readString(type)) {
     uint8_t sizeBytes[4];
     if (!in.read(reinterpret_cast<char*>(sizeBytes), 4)) return;  // OpenEXR reports the truncation
-    const int64_t size = int64_t(int32_t(uint32_t(sizeBytes[0]) | uint32_t(sizeBytes[1]) << 8 |
-                                         uint32_t(sizeBytes[2]) << 16 | uint32_t(sizeBytes[3]) << 24));
+    const int64_t size = littleEndian32(sizeBytes);
     const int64_t remaining = fileSize - int64_t(in.tellg());
     if (size < 0 || size > remaining) {
       throw InputError(path.string(), "header attribute '" + attribute + "' claims " + std::to_string(size) +
                                           " bytes but the file has " + std::to_string(remaining) + " left");
+    }
+    if (attribute == "dataWindow" && type == "box2i" && size == 16) {
+      uint8_t box[16];
+      if (!in.read(reinterpret_cast<char*>(box), 16)) return;
+      checkWindowSize(path.string(), int64_t(littleEndian32(box + 8)) - littleEndian32(box) + 1,
+                      int64_t(littleEndian32(box + 12)) - littleEndian32(box + 4) + 1);
+      continue;
     }
     in.seekg(size, std::ios::cur);
   }
@@ -65,20 +86,15 @@ Panorama readPanoramaExr(const std::filesystem::path& path, std::optional<glm::i
   const std::string name = path.string();
   if (!std::filesystem::exists(path)) throw InputError(name, "file does not exist");
   try {
-    checkHeaderAttributeSizes(path);
+    checkHeaderBeforeOpenExr(path);
     Imf::InputFile file(name.c_str());
     const Imf::Header& header = file.header();
     const Imath::Box2i window = header.dataWindow();
-    // In 64 bits: a hostile data window overflows int.
     const int64_t windowWidth = int64_t(window.max.x) - int64_t(window.min.x) + 1;
     const int64_t windowHeight = int64_t(window.max.y) - int64_t(window.min.y) + 1;
-    if (windowWidth <= 0 || windowHeight <= 0) throw InputError(name, "empty image");
-    const std::string size = std::to_string(windowWidth) + "x" + std::to_string(windowHeight);
-    if (windowWidth > kMaxPanoramaWidth || windowHeight > kMaxPanoramaWidth / 2) {
-      throw InputError(name, "size " + size + " is larger than triwalk reads (" + std::to_string(kMaxPanoramaWidth) + "x" +
-                                 std::to_string(kMaxPanoramaWidth / 2) + ")");
-    }
+    checkWindowSize(name, windowWidth, windowHeight);
     const int width = int(windowWidth), height = int(windowHeight);
+    const std::string size = std::to_string(width) + "x" + std::to_string(height);
     if (expectedSize && (width != expectedSize->x || height != expectedSize->y)) {
       throw InputError(name, "size " + size + " but the manifest says " + std::to_string(expectedSize->x) + "x" +
                                  std::to_string(expectedSize->y));

@@ -142,6 +142,25 @@ TEST_CASE("SIGTERM stops capture while it searches an imported scene for its wal
   CHECK_FALSE(std::filesystem::exists(out));
 }
 
+TEST_CASE("SIGTERM stops render cleanly: no frames, no statistics, no folder left behind") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 3, 3, 128, 0);
+  const std::filesystem::path frames = directory / "frames", stats = directory / "stats.json", status = directory / "status.txt";
+  const std::string log = (directory / "log.txt").string();
+  // 400 frames take tens of seconds; the signal comes once some are written.
+  const std::string script = std::string(TRIWALK_BINARY) + " render --dataset " + (directory / "data").string() +
+                             " --frames 400 --size 320x240 --out " + frames.string() + " --stats " + stats.string() +
+                             " > " + log + " 2>&1 & pid=$!; for i in $(seq 600); do grep -q \"render: \" " + log +
+                             " && break; sleep 0.1; done; sleep 1; kill -TERM $pid; wait $pid; echo $? > " + status.string();
+  REQUIRE(std::system(("bash -c '" + script + "'").c_str()) == 0);
+  const std::string printed = testing::readTextFileOrEmpty(log);
+  INFO("log: " << printed);
+  CHECK(std::stoi(testing::readTextFileOrEmpty(status)) == 130);
+  CHECK(printed.find("triwalk: interrupted; no output written") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(frames));
+  CHECK_FALSE(std::filesystem::exists(stats));
+}
+
 TEST_CASE("render --stats reports per frame the holes before the fill, none left after it, and the frame time") {
   testing::TemporaryDirectory directory;
   testing::writeAnalyticDataset(directory / "data", 3, 3, 128, 0);

@@ -16,6 +16,8 @@
 #include "render/gl/gl_context.h"
 #include "render/walkthrough/walkthrough_renderer.h"
 
+#include <unistd.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -48,6 +50,35 @@ Rgb8Image cpuReference(const Dataset& dataset, const std::array<int, 3>& referen
   }
   return image;
 }
+
+// Frames go to a hidden folder inside --out and move into place once all
+// are rendered, so an interrupted or failed render leaves no partial set.
+class FrameStaging {
+public:
+  explicit FrameStaging(const std::filesystem::path& out)
+      : out_(out), staging_(out / (".tmp-render-" + std::to_string(::getpid()))), createdOut_(!std::filesystem::exists(out)) {
+    std::filesystem::create_directories(staging_);
+  }
+  ~FrameStaging() {
+    std::error_code ignored;
+    std::filesystem::remove_all(staging_, ignored);
+    if (!committed_ && createdOut_) std::filesystem::remove(out_, ignored);  // only if empty
+  }
+  FrameStaging(const FrameStaging&) = delete;
+  FrameStaging& operator=(const FrameStaging&) = delete;
+
+  const std::filesystem::path& folder() const { return staging_; }
+  void commit() {
+    for (const auto& entry : std::filesystem::directory_iterator(staging_)) {
+      std::filesystem::rename(entry.path(), out_ / entry.path().filename());
+    }
+    committed_ = true;
+  }
+
+private:
+  std::filesystem::path out_, staging_;
+  bool createdOut_ = false, committed_ = false;
+};
 
 }  // namespace
 
@@ -127,7 +158,7 @@ void registerRenderCommand(CLI::App& app) {
     settings.blend = synthesis.blend;
     settings.holes = synthesis.holes;
     settings.showSources = a.showSources;
-    std::filesystem::create_directories(a.out);
+    FrameStaging staging(a.out);
     std::map<int, std::unique_ptr<WarpSource>> cpuSources;
     nlohmann::json statistics = {{"holes", holeModeName(synthesis.holes)}, {"frames", nlohmann::json::array()}};
     double psnrSum = 0.0, worstPsnr = INFINITY;
@@ -157,7 +188,7 @@ void registerRenderCommand(CLI::App& app) {
       }
       char name[64];
       std::snprintf(name, sizeof name, "frame_%04zu", i);
-      const std::filesystem::path stem = std::filesystem::path(a.out) / name;
+      const std::filesystem::path stem = staging.folder() / name;
       writePng(stem.string() + ".png", image);
       if (a.compare) {
         const Rgb8Image reference = cpuReference(dataset, frame.references, camera, synthesis, cpuSources);
@@ -172,6 +203,7 @@ void registerRenderCommand(CLI::App& app) {
       progress.advance();
     }
     progress.finish();
+    staging.commit();
     std::printf("rendered %zu frames %dx%d into %s (holes %s), %.1f ms a frame with loading\n", poses.size(), width,
                 height, a.out.c_str(), holeModeName(synthesis.holes), frameMilliseconds / double(poses.size()));
     if (!a.stats.empty()) {

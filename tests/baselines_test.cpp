@@ -30,6 +30,34 @@ TEST_CASE("uniform: a regular sub-grid of the capture paths with the corners, ne
   CHECK(grid == expected);
 }
 
+TEST_CASE("uniform without paths: a square lattice snapped to irregular samples, near the count, corners included") {
+  // A 10 x 5 m area sampled irregularly: a jittered 0.5 m grid with every
+  // seventh position missing (an imported capture has no paths).
+  std::vector<glm::dvec2> positions;
+  for (int x = 0; x <= 20; ++x) {
+    for (int y = 0; y <= 10; ++y) {
+      if ((x * 11 + y) % 7 == 3) continue;
+      positions.emplace_back(0.5 * x + 0.1 * std::sin(1.7 * x + 2.3 * y), 0.5 * y + 0.1 * std::cos(2.9 * x + 1.1 * y));
+    }
+  }
+  for (const int count : {8, 18, 32}) {
+    CAPTURE(count);
+    const std::vector<int> selection = latticeSelection(positions, count);
+    CHECK(std::set<int>(selection.begin(), selection.end()).size() == selection.size());
+    CHECK(std::abs(int(selection.size()) - count) <= count / 4 + 1);
+    CHECK(latticeSelection(positions, count) == selection);
+    // Spread like a lattice: every position has a selected sample within
+    // about one cell of a lattice of that many nodes over the 50 m² (side
+    // sqrt(50 / n)), so the corners are served too.
+    const double cell = std::sqrt(50.0 / double(selection.size()));
+    for (glm::dvec2 p : positions) {
+      double nearest = 1e9;
+      for (int s : selection) nearest = std::min(nearest, glm::length(p - positions[size_t(s)]));
+      CHECK(nearest < 1.2 * cell);
+    }
+  }
+}
+
 TEST_CASE("k-medoids: k distinct samples spread over the area, the same every time") {
   std::vector<glm::dvec2> positions;
   for (int x = 0; x < 20; ++x) {

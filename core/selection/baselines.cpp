@@ -1,5 +1,6 @@
 #include "core/selection/baselines.h"
 
+#include "core/selection/selection.h"
 #include "core/support/errors.h"
 
 #include <algorithm>
@@ -10,20 +11,53 @@
 
 namespace triwalk {
 
+std::vector<int> latticeSelection(std::span<const glm::dvec2> positions, int count) {
+  TRIWALK_CHECK(!positions.empty() && count >= 1, "a lattice needs positions and a count");
+  glm::dvec2 lower(std::numeric_limits<double>::max()), upper(std::numeric_limits<double>::lowest());
+  for (glm::dvec2 p : positions) lower = glm::min(lower, p), upper = glm::max(upper, p);
+  const glm::dvec2 size = glm::max(upper - lower, glm::dvec2(1e-9));
+  std::vector<int> best;
+  // Lattices with k intervals along the longer side, square cells, from
+  // coarse to fine; stop once they overshoot count by half.
+  const double longer = std::max(size.x, size.y);
+  for (int k = 1; k <= int(positions.size()); ++k) {
+    const double cell = longer / double(k);
+    const int columns = int(std::lround(size.x / cell)) + 1, rows = int(std::lround(size.y / cell)) + 1;
+    std::vector<int> snapped;
+    for (int r = 0; r < rows; ++r) {
+      for (int c = 0; c < columns; ++c) {
+        const glm::dvec2 node = lower + glm::dvec2(columns > 1 ? size.x * c / (columns - 1) : 0.5 * size.x,
+                                                   rows > 1 ? size.y * r / (rows - 1) : 0.5 * size.y);
+        int nearest = 0;
+        for (int i = 1; i < int(positions.size()); ++i) {
+          if (glm::length(positions[size_t(i)] - node) < glm::length(positions[size_t(nearest)] - node)) nearest = i;
+        }
+        snapped.push_back(nearest);
+      }
+    }
+    std::sort(snapped.begin(), snapped.end());
+    snapped.erase(std::unique(snapped.begin(), snapped.end()), snapped.end());
+    if (best.empty() || std::abs(int(snapped.size()) - count) < std::abs(int(best.size()) - count)) best = snapped;
+    if (int(snapped.size()) > count + count / 2) break;
+  }
+  return best;
+}
+
 std::vector<int> uniformSelection(const Dataset& dataset, int count) {
   std::map<std::pair<int, int>, int> grid;  // (path, step) -> sample index
   int paths = 0, steps = 0;
+  bool onPaths = true;
   for (int i = 0; i < dataset.sampleCount(); ++i) {
     const ViewRecord& sample = dataset.sample(i);
-    if (sample.path < 0 || sample.step < 0) {
-      throw InputError(dataset.manifestPath().string(), "the uniform baseline needs each sample's path and step");
-    }
+    onPaths &= sample.path >= 0 && sample.step >= 0;
+    if (!onPaths) break;
     grid[{sample.path, sample.step}] = i;
     paths = std::max(paths, sample.path + 1);
     steps = std::max(steps, sample.step + 1);
   }
-  if (int(grid.size()) != paths * steps) {
-    throw InputError(dataset.manifestPath().string(), "the uniform baseline needs a complete grid of paths and steps");
+  if (!onPaths || int(grid.size()) != paths * steps || int(grid.size()) != dataset.sampleCount() || paths < 2 ||
+      steps < 2) {
+    return latticeSelection(samplePositions(dataset), count);
   }
   // Spacing of the dense grid along both axes, from the first path and step.
   const glm::dvec2 origin(dataset.sample(grid.at({0, 0})).position);

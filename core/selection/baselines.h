@@ -1,6 +1,9 @@
 #pragma once
 // The selections edge collapse is compared with, at the same sample count:
 //   uniform:  a regular sub-grid of the capture paths (the paper's (b)),
+//             or, for samples without a complete grid of paths (imported
+//             or irregular captures), a regular lattice over their
+//             bounding box, each node snapped to its nearest sample,
 //   k-medoids: position-only clustering, as MPEG's immersive-video test
 //             model picks basic views,
 //   random:   a seeded random subset.
@@ -16,10 +19,16 @@
 
 namespace triwalk {
 
-// Needs each sample's path and step; a sub-grid of paths and steps near
-// count samples with even spacing (it may hold a few more or fewer),
-// corners included. Throws InputError if the manifest lacks paths.
+// With each sample's path and step on a complete grid: a sub-grid of paths
+// and steps near count samples with even spacing (it may hold a few more
+// or fewer), corners included. Otherwise latticeSelection.
 std::vector<int> uniformSelection(const Dataset& dataset, int count);
+
+// A regular lattice of square cells over the positions' bounding box,
+// corners on the box's corners, each node snapped to the nearest position
+// (ties: the lower index), repeats dropped; of the lattices from 2 x 2 up,
+// the one whose distinct samples come nearest count (ties: the coarser).
+std::vector<int> latticeSelection(std::span<const glm::dvec2> positions, int count);
 
 // Deterministic: greedy farthest-point start, then Voronoi iteration
 // (assign to nearest medoid, move each medoid to its cluster's best

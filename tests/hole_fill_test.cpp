@@ -8,6 +8,7 @@
 #include "tests/analytic_scene.h"
 
 #include <doctest/doctest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <cmath>
@@ -139,6 +140,20 @@ TEST_CASE("hole modes parse by name and refuse anything else") {
   CHECK(parseHoleMode("mark") == HoleMode::Mark);
   CHECK(parseHoleMode("black") == HoleMode::Black);
   CHECK_THROWS_WITH_AS(parseHoleMode("blur"), doctest::Contains("unknown hole mode 'blur'"), InputError);
+}
+
+
+TEST_CASE("the fill is the same for any thread count") {
+  const PillarWarp warp = warpPastPillar(BlendOptions{}.epsilon);
+  BlendedView single = warp.raw.blended, parallel = warp.raw.blended;
+  {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    fillHoles(single, BlendOptions{}.epsilon);
+  }
+  fillHoles(parallel, BlendOptions{}.epsilon);
+  CHECK(single.color.pixels == parallel.color.pixels);
+  CHECK(single.distance.pixels == parallel.distance.pixels);
+  CHECK(single.hole == parallel.hole);
 }
 
 }  // namespace triwalk

@@ -142,7 +142,6 @@ TEST_CASE("hole modes parse by name and refuse anything else") {
   CHECK_THROWS_WITH_AS(parseHoleMode("blur"), doctest::Contains("unknown hole mode 'blur'"), InputError);
 }
 
-
 TEST_CASE("the fill is the same for any thread count") {
   const PillarWarp warp = warpPastPillar(BlendOptions{}.epsilon);
   BlendedView single = warp.raw.blended, parallel = warp.raw.blended;

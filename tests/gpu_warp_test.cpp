@@ -1,7 +1,6 @@
 // The GPU warp against the CPU reference, across OpenGL backends, and
 // against committed golden frames.
 
-#include "core/image/color.h"
 #include "core/image/image_compare.h"
 #include "core/io/dataset.h"
 #include "core/io/png_io.h"
@@ -71,12 +70,7 @@ CpuFrame cpuFrame(const Dataset& dataset, const std::vector<int>& references, co
   SynthesisOptions options;
   options.holes = holes;
   const SynthesizedView view = synthesizeView(pointers, DestinationCamera::camera(camera), options);
-  CpuFrame frame{Rgb8Image(camera.width, camera.height), view.fill.holesBefore};
-  for (size_t i = 0; i < frame.image.pixelCount(); ++i) {
-    frame.image.pixels[i] =
-        toBytes(view.blended.hole[i] ? holeDisplayColor(holes) : displayColor(view.blended.color.pixels[i]));
-  }
-  return frame;
+  return {displayImage(view.blended, holes), view.fill.holesBefore};
 }
 
 }  // namespace

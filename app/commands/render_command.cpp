@@ -5,7 +5,6 @@
 #include "app/setup/option_checks.h"
 #include "app/setup/quality_options.h"
 #include "app/setup/walkthrough_setup.h"
-#include "core/image/color.h"
 #include "core/image/image_compare.h"
 #include "core/io/camera_path.h"
 #include "core/io/json_fields.h"
@@ -42,13 +41,7 @@ Rgb8Image cpuReference(const Dataset& dataset, const std::array<int, 3>& referen
     }
     pointers.push_back(source.get());
   }
-  const SynthesizedView view = synthesizeView(pointers, DestinationCamera::camera(camera), synthesis);
-  Rgb8Image image(camera.width, camera.height);
-  for (size_t i = 0; i < image.pixelCount(); ++i) {
-    image.pixels[i] =
-        toBytes(view.blended.hole[i] ? holeDisplayColor(synthesis.holes) : displayColor(view.blended.color.pixels[i]));
-  }
-  return image;
+  return displayImage(synthesizeView(pointers, DestinationCamera::camera(camera), synthesis).blended, synthesis.holes);
 }
 
 // Frames go to a hidden folder inside --out and move into place once all

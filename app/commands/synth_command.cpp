@@ -149,11 +149,7 @@ void registerSynthCommand(CLI::App& app) {
                 holeModeName(synthesis.holes));
     if (!a.out.empty()) {
       std::filesystem::create_directories(a.out);
-      Rgb8Image image = toDisplayImage(blended.color);
-      for (size_t i = 0; i < image.pixelCount(); ++i) {
-        if (blended.hole[i]) image.pixels[i] = toBytes(holeDisplayColor(synthesis.holes));
-      }
-      writePng(std::filesystem::path(a.out) / "reconstruction.png", image);
+      writePng(std::filesystem::path(a.out) / "reconstruction.png", displayImage(blended, synthesis.holes));
     }
     if (!truth) {
       std::printf("no ground truth at this position (give --truth to compare)\n");

@@ -64,7 +64,7 @@ SynthesisOptions synthesisOptions(const QualityArguments& arguments) {
   options.warp.maxDepthRatio = arguments.maxDepthRatio;
   options.blend.epsilon = arguments.epsilon;
   options.blend.minimumWeightDistance = arguments.minimumWeightDistance;
-  options.holes = parseHoleMode(arguments.holes.empty() ? "fill" : arguments.holes);
+  options.holes = parseHoleMode(arguments.holes);
   return options;
 }
 

@@ -22,7 +22,7 @@ struct QualityArguments {
   double beta = ErrorOptions{}.beta;
   double delta = ErrorOptions{}.delta;
   std::string pixelWeighting = "solid-angle";
-  std::string holes;  // set by the command's default when registered
+  std::string holes = "fill";  // the command's own default replaces it when registered
 };
 
 // Warp, blend, hole and error options (synth, decimate, eval); holes: the

@@ -265,10 +265,7 @@ void DecimationSession::inspect(const Triangle& triangle) {
     ScalarImage perPixel;
     inspection.error = reconstructionError(toDisplayColors(view.blended.color), view.blended.hole,
                                            errors_->sampleDisplay(inspection.destination), settings_.error, &perPixel);
-    inspection.reconstruction = toDisplayImage(view.blended.color);
-    for (size_t i = 0; i < view.blended.hole.size(); ++i) {
-      if (view.blended.hole[i]) inspection.reconstruction.pixels[i] = {255, 0, 255};
-    }
+    inspection.reconstruction = displayImage(view.blended, HoleMode::Mark);
     Rgb8Image truth(perPixel.width, perPixel.height);
     const ColorImage& display = errors_->sampleDisplay(inspection.destination);
     for (size_t i = 0; i < truth.pixelCount(); ++i) truth.pixels[i] = toBytes(display.pixels[i]);

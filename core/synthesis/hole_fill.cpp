@@ -1,5 +1,6 @@
 #include "core/synthesis/hole_fill.h"
 
+#include "core/image/color.h"
 #include "core/support/errors.h"
 
 #include <tbb/blocked_range.h>
@@ -26,7 +27,17 @@ const char* holeModeName(HoleMode mode) {
   return "?";
 }
 
-glm::vec3 holeDisplayColor(HoleMode mode) { return mode == HoleMode::Mark ? glm::vec3(1.0f, 0.0f, 1.0f) : glm::vec3(0.0f); }
+glm::vec3 holeDisplayColor(HoleMode mode) {
+  return mode == HoleMode::Mark ? glm::vec3(1.0f, 0.0f, 1.0f) : glm::vec3(0.0f);
+}
+
+Rgb8Image displayImage(const BlendedView& view, HoleMode mode) {
+  Rgb8Image image(view.color.width, view.color.height);
+  for (size_t i = 0; i < image.pixelCount(); ++i) {
+    image.pixels[i] = toBytes(view.hole[i] ? holeDisplayColor(mode) : displayColor(view.color.pixels[i]));
+  }
+  return image;
+}
 
 namespace {
 

@@ -37,6 +37,10 @@ const char* holeModeName(HoleMode mode);
 // The display colour of a pixel left a hole: magenta to mark, else black.
 glm::vec3 holeDisplayColor(HoleMode mode);
 
+// A blended view in display bytes, the pixels still holes in
+// holeDisplayColor(mode).
+Rgb8Image displayImage(const BlendedView& view, HoleMode mode);
+
 struct HoleFillStatistics {
   size_t holesBefore = 0;  // pixels that were holes before filling
   size_t unfilled = 0;     // pixels still holes after (only when nothing at all was covered)

@@ -99,11 +99,16 @@ WalkableAreaProposal proposeWalkableArea(const Scene& scene, float eyeHeight, fl
       return std::abs(spawn.z - kSpawnAboveFloor - floor) < 0.3f && glm::length(glm::vec2(spawn - position)) < kSpawnReach;
     });
   };
+  // The cells each floor probes, listed first so that progress knows the total.
+  std::vector<std::vector<glm::ivec2>> cellsToProbe(floors.size());
   size_t toProbe = 0;
-  for (float floor : floors) {
+  for (size_t f = 0; f < floors.size(); ++f) {
     for (int y = 0; y < rows; ++y) {
-      for (int x = 0; x < columns; ++x) toProbe += worthProbing(positionAt(x, y, floor), floor);
+      for (int x = 0; x < columns; ++x) {
+        if (worthProbing(positionAt(x, y, floors[f]), floors[f])) cellsToProbe[f].emplace_back(x, y);
+      }
     }
+    toProbe += cellsToProbe[f].size();
   }
   // A level without spawn points is probed over its whole bounding box:
   // minutes on a large one, so it shows progress and stops on Ctrl-C.
@@ -111,21 +116,18 @@ WalkableAreaProposal proposeWalkableArea(const Scene& scene, float eyeHeight, fl
   ProgressReporter progress("find walkable area: positions probed", toProbe, quiet);
   WalkableAreaProposal best;
   int bestCells = 0;
-  for (float floor : floors) {
+  for (size_t f = 0; f < floors.size(); ++f) {
+    const float floor = floors[f];
     std::vector<std::vector<bool>> walkable(size_t(rows), std::vector<bool>(size_t(columns), false));
-    int count = 0, probed = 0;
-    for (int y = 0; y < rows; ++y) {
-      for (int x = 0; x < columns; ++x) {
-        const glm::vec3 position = positionAt(x, y, floor);
-        if (!worthProbing(position, floor)) continue;
-        throwIfInterrupted();
-        const bool ok = walkableView(capturer.capture(position), eyeHeight);
-        progress.advance();
-        walkable[size_t(y)][size_t(x)] = ok;
-        count += ok;
-        ++probed;
-      }
+    int count = 0;
+    for (const glm::ivec2 cell : cellsToProbe[f]) {
+      throwIfInterrupted();
+      const bool ok = walkableView(capturer.capture(positionAt(cell.x, cell.y, floor)), eyeHeight);
+      progress.advance();
+      walkable[size_t(cell.y)][size_t(cell.x)] = ok;
+      count += ok;
     }
+    const int probed = int(cellsToProbe[f].size());
     const Rectangle rectangle = largestRectangle(walkable);
     // At least 2 x 2 positions: the area must have a width and a depth.
     if (rectangle.x1 <= rectangle.x0 || rectangle.y1 <= rectangle.y0 || rectangle.cells() <= bestCells) continue;

@@ -22,23 +22,6 @@ uint64_t tripleKey(const Triangle& triangle) {
 
 bool hasVertex(const Triangle& t, int v) { return t[0] == v || t[1] == v || t[2] == v; }
 
-// The errors of `missing`, in chunks of 64 when progress is shown (the
-// first costing, thousands of errors), so that it reports and stops on
-// Ctrl-C; each error is independent of the others.
-template <class Request, class Compute>
-std::vector<double> computeInChunks(const std::vector<Request>& missing, ProgressReporter* progress, Compute compute) {
-  std::vector<double> computed(missing.size());
-  const size_t chunk = progress ? 64 : missing.size();
-  if (progress) progress->setTotal(progress->done() + missing.size());
-  for (size_t first = 0; first < missing.size(); first += chunk) {
-    if (progress) throwIfInterrupted();
-    const size_t count = std::min(chunk, missing.size() - first);
-    compute(std::span<const Request>(missing).subspan(first, count), std::span<double>(computed).subspan(first, count));
-    if (progress) progress->advance(count);
-  }
-  return computed;
-}
-
 }  // namespace
 
 const char* placementName(PlacementKind kind) {
@@ -393,8 +376,9 @@ void EdgeCollapseDecimator::ensureErrors(const std::vector<Triangle>& triangles,
     missing.push_back(t);
   }
   if (missing.empty()) return;
-  const std::vector<double> computed =
-      computeInChunks(missing, progress, [&](std::span<const Triangle> batch, std::span<double> batchErrors) {
+  // Progress is shown for the first costing, thousands of errors.
+  const std::vector<double> computed = computeInChunks(
+      std::span<const Triangle>(missing), progress, [&](std::span<const Triangle> batch, std::span<double> batchErrors) {
         errors_.triangles->computeErrors(batch, batchErrors);
       });
   for (size_t i = 0; i < missing.size(); ++i) cache_[tripleKey(missing[i])] = computed[i];
@@ -414,7 +398,8 @@ void EdgeCollapseDecimator::ensureSampleErrors(const std::vector<SampleReconstru
   }
   if (missing.empty()) return;
   const std::vector<double> computed = computeInChunks(
-      missing, progress, [&](std::span<const SampleReconstruction> batch, std::span<double> batchErrors) {
+      std::span<const SampleReconstruction>(missing), progress,
+      [&](std::span<const SampleReconstruction> batch, std::span<double> batchErrors) {
         errors_.samples->computeReconstructionErrors(batch, batchErrors);
       });
   for (size_t i = 0; i < missing.size(); ++i) {

@@ -3,27 +3,21 @@
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 
-#include <algorithm>
 #include <chrono>
+#include <numeric>
 
 namespace triwalk {
 
 double meanTriangleError(TriangleErrorSource& errors, const std::vector<Triangle>& triangles, bool quiet) {
   TRIWALK_CHECK(!triangles.empty(), "no triangles to measure");
-  // In chunks, for progress and a prompt stop on Ctrl-C.
-  constexpr size_t kChunk = 32;
-  std::vector<double> values(triangles.size());
   ProgressReporter progress("dense triangle errors", triangles.size(), quiet);
-  for (size_t begin = 0; begin < triangles.size(); begin += kChunk) {
-    throwIfInterrupted();
-    const size_t count = std::min(kChunk, triangles.size() - begin);
-    errors.computeErrors(std::span(triangles).subspan(begin, count), std::span(values).subspan(begin, count));
-    progress.advance(count);
-  }
+  const std::vector<double> values =
+      computeInChunks(std::span<const Triangle>(triangles), &progress,
+                      [&](std::span<const Triangle> batch, std::span<double> batchErrors) {
+                        errors.computeErrors(batch, batchErrors);
+                      });
   progress.finish();
-  double sum = 0.0;
-  for (double value : values) sum += value;
-  return sum / double(values.size());
+  return std::accumulate(values.begin(), values.end(), 0.0) / double(values.size());
 }
 
 SelectionRun selectReferences(const Dataset& dataset, DatasetTriangleErrors& errors, const SelectionSettings& requested,

@@ -3,11 +3,14 @@
 // interruption: Ctrl-C sets a flag that long loops poll between units of
 // work, so they stop without writing partial output.
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <mutex>
+#include <span>
 #include <string>
+#include <vector>
 
 namespace triwalk {
 
@@ -56,5 +59,23 @@ private:
 };
 
 std::string formatDuration(double seconds);
+
+// Values for independent requests: compute(span<const Request>,
+// span<double>) fills one batch. With progress, in batches of 64 that
+// advance it and stop on Ctrl-C between them (Interrupted); without, in
+// one call.
+template <class Request, class Compute>
+std::vector<double> computeInChunks(std::span<const Request> requests, ProgressReporter* progress, Compute compute) {
+  std::vector<double> computed(requests.size());
+  const size_t chunk = progress ? 64 : requests.size();
+  if (progress) progress->setTotal(progress->done() + requests.size());
+  for (size_t first = 0; first < requests.size(); first += chunk) {
+    if (progress) throwIfInterrupted();
+    const size_t count = std::min(chunk, requests.size() - first);
+    compute(requests.subspan(first, count), std::span<double>(computed).subspan(first, count));
+    if (progress) progress->advance(count);
+  }
+  return computed;
+}
 
 }  // namespace triwalk

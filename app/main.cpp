@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   triwalk::registerCaptureCommand(app);
   triwalk::registerExportPngCommand(app);
+  triwalk::registerRegionCommand(app);
   triwalk::registerSynthCommand(app);
   triwalk::registerDecimateCommand(app);
   triwalk::registerEvalCommand(app);

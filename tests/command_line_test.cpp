@@ -128,12 +128,12 @@ TEST_CASE("SIGTERM stops decimate and eval cleanly, with no partial output") {
   }
 }
 
-TEST_CASE("SIGTERM stops capture while it searches an imported scene for its walkable area") {
+TEST_CASE("SIGTERM stops capture while it searches an imported scene for its walkable region") {
   const std::filesystem::path house = "/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc";
   REQUIRE_MESSAGE(std::filesystem::exists(house), "install assimp-testmodels (scripts/install-deps.sh test)");
   testing::TemporaryDirectory directory;
   const std::filesystem::path out = directory / "house", status = directory / "status.txt";
-  // The search probes about 1150 positions (over 10 s here); the signal
+  // The flood fill probes about 1460 cells (about 6 s here); the signal
   // comes once its progress line shows (after the import, however long
   // that takes under the sanitizers).
   const std::string log = (directory / "log.txt").string();
@@ -143,7 +143,7 @@ TEST_CASE("SIGTERM stops capture while it searches an imported scene for its wal
   REQUIRE(std::system(("bash -c '" + script + "'").c_str()) == 0);
   const std::string printed = testing::readTextFileOrEmpty(log);
   INFO("log: " << printed);
-  CHECK(printed.find("find walkable area: positions probed") != std::string::npos);
+  CHECK(printed.find("find walkable region: cells probed") != std::string::npos);
   CHECK(std::stoi(testing::readTextFileOrEmpty(status)) == 130);
   CHECK(printed.find("triwalk: interrupted; no output written") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(out));

@@ -3,6 +3,7 @@
 #include "app/commands/commands.h"
 #include "app/setup/option_checks.h"
 #include "app/setup/scene_capture.h"
+#include "core/io/json_fields.h"
 
 namespace triwalk {
 
@@ -12,6 +13,8 @@ void registerCaptureCommand(CLI::App& app) {
     std::string out;
     std::string gl = "auto";
     std::vector<float> area;
+    std::string region;
+    std::vector<float> start;
     float eyeHeight = 0.0f;
     float spacing = 0.0f;
     bool autoArea = false;
@@ -32,6 +35,14 @@ void registerCaptureCommand(CLI::App& app) {
       ->check(positiveNumber());
   command->add_option("--area", arguments->area, "Sampled rectangle x0,y0,x1,y1 in metres (default: the scene's)")
       ->delimiter(',')->expected(4);
+  command->add_option("--region", arguments->region,
+                      "Walkable region file: {\"polygons\": [{\"outer\": [[x, y], ...], \"holes\": [...]}, ...]} in metres")
+      ->check(CLI::ExistingFile)
+      ->excludes("--area");
+  command->add_option("--start", arguments->start,
+                      "X,Y in metres: where the automatic region's flood fill starts (default: spawn points, else the "
+                      "scene's centre)")
+      ->delimiter(',')->expected(2)->excludes("--area")->excludes("--region");
   command->add_option("--eye-height", arguments->eyeHeight, "Camera height above the floor, metres (default: the scene's)")
       ->check(positiveNumber());
   command->add_option("--width", arguments->options.width, "Panorama width in pixels (height = width / 2)")
@@ -42,7 +53,8 @@ void registerCaptureCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--seed", arguments->options.seed, "Seed of the probe positions")->capture_default_str();
   command->add_flag("--auto-area", arguments->autoArea,
-                    "Find the walkable area by probing (default for imported scenes without --area)");
+                    "Find the walkable region by a flood fill of probes (default for imported scenes without --area "
+                    "or --region)");
   command->add_option("--gl", arguments->gl, "Headless OpenGL: auto, egl or osmesa")->capture_default_str();
   command->add_flag("--quiet", arguments->options.quiet, "No progress output");
   addSceneImportOptions(*command, arguments->import);
@@ -54,6 +66,8 @@ void registerCaptureCommand(CLI::App& app) {
     request.import = a.import;
     request.options = a.options;
     if (!a.area.empty()) request.options.area = glm::vec4(a.area[0], a.area[1], a.area[2], a.area[3]);
+    if (!a.region.empty()) request.options.region = WalkableRegion::fromJson(readJsonFile(a.region), a.region);
+    if (!a.start.empty()) request.starts.push_back({a.start[0], a.start[1]});
     if (a.eyeHeight > 0.0f) request.options.eyeHeight = a.eyeHeight;
     if (a.spacing > 0.0f) request.options.spacing = a.spacing;
     request.autoArea = a.autoArea;

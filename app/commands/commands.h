@@ -7,6 +7,7 @@ namespace triwalk {
 
 void registerCaptureCommand(CLI::App& app);
 void registerExportPngCommand(CLI::App& app);
+void registerRegionCommand(CLI::App& app);
 void registerBenchCommand(CLI::App& app);
 void registerSynthCommand(CLI::App& app);
 void registerDecimateCommand(CLI::App& app);

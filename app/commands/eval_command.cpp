@@ -70,9 +70,9 @@ void compareAtCounts(const Dataset& dataset, const Selection& selection, const s
     const size_t steps = *lastStepWithSamples(initialCount, selection.collapses, count);
     const ViewMesh meshes[4] = {
         ViewMesh(positions, replayForward(selection.initialTriangles, selection.collapses, steps)),
-        ViewMesh::delaunay(positions, uniformSelection(dataset, count), "uniform baseline"),
-        ViewMesh::delaunay(positions, kMedoidsSelection(positions, count), "k-medoids baseline"),
-        ViewMesh::delaunay(positions, randomSelection(dataset.sampleCount(), count, seed), "random baseline")};
+        datasetMesh(dataset, uniformSelection(dataset, count), "uniform baseline"),
+        datasetMesh(dataset, kMedoidsSelection(positions, count), "k-medoids baseline"),
+        datasetMesh(dataset, randomSelection(dataset.sampleCount(), count, seed), "random baseline")};
     double values[4];
     for (int m = 0; m < 4; ++m) {
       values[m] = evaluateMesh("", meshes[m], errors).probeMeanError;
@@ -126,11 +126,11 @@ void registerEvalCommand(CLI::App& app) {
       ViewMesh mesh;
     };
     std::vector<Row> rows;
-    rows.push_back({"initial", ViewMesh::delaunay(positions, {}, a.dataset)});
-    rows.push_back({"uniform", ViewMesh::delaunay(positions, uniformSelection(dataset, count), "uniform baseline")});
+    rows.push_back({"initial", datasetMesh(dataset, {}, a.dataset)});
+    rows.push_back({"uniform", datasetMesh(dataset, uniformSelection(dataset, count), "uniform baseline")});
     rows.push_back({"edge_collapse", selectionMesh(selection, dataset)});
-    rows.push_back({"kmedoids", ViewMesh::delaunay(positions, kMedoidsSelection(positions, count), "k-medoids baseline")});
-    rows.push_back({"random", ViewMesh::delaunay(positions, randomSelection(dataset.sampleCount(), count, a.seed),
+    rows.push_back({"kmedoids", datasetMesh(dataset, kMedoidsSelection(positions, count), "k-medoids baseline")});
+    rows.push_back({"random", datasetMesh(dataset, randomSelection(dataset.sampleCount(), count, a.seed),
                                                  "random baseline")});
 
     std::vector<MethodEvaluation> evaluations;

@@ -228,7 +228,7 @@ void registerSuiteCommand(CLI::App& app) {
       std::printf("== %s: %s\n", scene.name.c_str(), describeErrorSettings(settings).c_str());
       DatasetTriangleErrors errors(dataset, settings, a.quiet);
       const std::vector<glm::dvec2> positions = samplePositions(dataset);
-      const std::vector<double> dense = probeErrors(ViewMesh::delaunay(positions, {}, dataset.manifestPath().string()), errors);
+      const std::vector<double> dense = probeErrors(datasetMesh(dataset, {}, dataset.manifestPath().string()), errors);
 
       for (double fraction : spec.fractions) {
         throwIfInterrupted();
@@ -251,14 +251,14 @@ void registerSuiteCommand(CLI::App& app) {
           selection = std::move(run.selection);
           row.selectionSeconds = run.collapseSeconds + run.refinementSeconds;
         }
-        const ViewMesh uniform = ViewMesh::delaunay(positions, uniformSelection(dataset, count), "uniform baseline");
+        const ViewMesh uniform = datasetMesh(dataset, uniformSelection(dataset, count), "uniform baseline");
         row.uniformCount = uniform.vertexCount();
         const std::vector<double> edgeCollapse = probeErrors(selectionMesh(selection, dataset), errors);
         const std::vector<double> uniformErrors = probeErrors(uniform, errors);
         const std::vector<double> kmedoids =
-            probeErrors(ViewMesh::delaunay(positions, kMedoidsSelection(positions, count), "k-medoids baseline"), errors);
+            probeErrors(datasetMesh(dataset, kMedoidsSelection(positions, count), "k-medoids baseline"), errors);
         const std::vector<double> random =
-            probeErrors(ViewMesh::delaunay(positions, randomSelection(dataset.sampleCount(), count, 1), "random baseline"),
+            probeErrors(datasetMesh(dataset, randomSelection(dataset.sampleCount(), count, 1), "random baseline"),
                         errors);
         row.dense = mean(dense);
         row.uniform = mean(uniformErrors);

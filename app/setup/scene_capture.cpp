@@ -10,22 +10,32 @@ namespace triwalk {
 CaptureSummary captureScene(const SceneCaptureRequest& request) {
   LoadedScene loaded = loadSceneForCapture(request.scene, request.import);
   auto context = createHeadlessContext(parseHeadlessBackend(request.gl));
-  if (request.autoArea || (loaded.imported && !request.options.area)) {
-    const float eyeHeight = request.options.eyeHeight.value_or(loaded.scene.walkableArea.eyeHeight);
-    const WalkableAreaProposal proposal = proposeWalkableArea(loaded.scene, eyeHeight, 0.5f, request.scene, request.options.quiet);
+  CaptureOptions options = request.options;
+  if (!options.area && !options.region && (request.autoArea || loaded.imported)) {
+    RegionSearchOptions search;
+    search.eyeHeight = options.eyeHeight.value_or(loaded.scene.walkableArea.eyeHeight);
+    search.starts = request.starts;
+    search.quiet = options.quiet;
+    WalkableRegionProposal proposal = proposeWalkableRegion(loaded.scene, search, request.scene);
     std::printf("%s\n", proposal.reason.c_str());
-    loaded.scene.walkableArea.min = {proposal.area.x, proposal.area.y};
-    loaded.scene.walkableArea.max = {proposal.area.z, proposal.area.w};
+    options.region = std::move(proposal.region);
     loaded.scene.walkableArea.floorHeight = proposal.floorZ;
-    loaded.scene.walkableArea.eyeHeight = eyeHeight;
+    loaded.scene.walkableArea.eyeHeight = search.eyeHeight;
+  } else if (options.region && loaded.imported) {
+    loaded.scene.walkableArea.floorHeight = dominantFloorHeight(loaded.scene);
   }
-  const CapturePlan plan = planCapture(loaded.scene, request.options);
-  std::printf("scene %s: %zu triangles; %d paths x %d samples over [%.2f, %.2f] x [%.2f, %.2f] m at z = %.2f m, "
-              "%d probes, %dx%d\n",
-              loaded.name.c_str(), loaded.scene.triangleCount(), plan.paths, plan.perPath, plan.area.x, plan.area.z,
-              plan.area.y, plan.area.w, plan.eyeZ, request.options.probes, request.options.width,
-              request.options.width / 2);
-  const CaptureSummary summary = captureDataset(loaded.scene, loaded.name, request.options, request.out);
+  const CapturePlan plan = planCapture(loaded.scene, options);
+  if (plan.region) {
+    std::printf("scene %s: %zu triangles; %zu samples %.2f m apart over a %.1f m2 region, at z = %.2f m, %d probes, %dx%d\n",
+                loaded.name.c_str(), loaded.scene.triangleCount(), plan.samples.size(), plan.spacing, plan.region->area(),
+                plan.eyeZ, options.probes, options.width, options.width / 2);
+  } else {
+    std::printf("scene %s: %zu triangles; %d paths x %d samples over [%.2f, %.2f] x [%.2f, %.2f] m at z = %.2f m, "
+                "%d probes, %dx%d\n",
+                loaded.name.c_str(), loaded.scene.triangleCount(), plan.paths, plan.perPath, plan.area.x, plan.area.z,
+                plan.area.y, plan.area.w, plan.eyeZ, options.probes, options.width, options.width / 2);
+  }
+  const CaptureSummary summary = captureDataset(loaded.scene, loaded.name, options, request.out);
   std::printf("captured %d samples and %d probes into %s in %.1f s (%.2f panoramas/s) with %s\n", summary.samples,
               summary.probes, request.out.c_str(), summary.seconds,
               double(summary.samples + summary.probes) / std::max(summary.seconds, 1e-9), context->description().c_str());

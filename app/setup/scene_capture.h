@@ -1,20 +1,23 @@
 #pragma once
 // Capture of a scene into a data set, as `capture` and `suite` run it:
-// load the scene, open a headless GL context, find the walkable area of an
-// imported scene, render every view. Prints what it chose.
+// load the scene, open a headless GL context, find the walkable region of
+// an imported scene (unless --area or --region gives one), render every
+// view. Prints what it chose.
 
 #include "app/setup/scene_loading.h"
 #include "render/capture/dataset_capture.h"
 
 #include <string>
+#include <vector>
 
 namespace triwalk {
 
 struct SceneCaptureRequest {
   std::string scene = "builtin";
   SceneImportArguments import;
-  CaptureOptions options;
+  CaptureOptions options;  // options.region: given by --region
   bool autoArea = false;  // also for the built-in and JSON scenes, which state their own
+  std::vector<glm::vec2> starts;  // seeds of the automatic region (--start)
   std::string gl = "auto";
   std::string out;
 };

@@ -8,7 +8,7 @@
 namespace triwalk {
 
 ViewMesh walkthroughMesh(const Dataset& dataset, const std::string& selectionPath) {
-  if (selectionPath.empty()) return ViewMesh::delaunay(samplePositions(dataset), {}, dataset.manifestPath().string());
+  if (selectionPath.empty()) return datasetMesh(dataset, {}, dataset.manifestPath().string());
   return selectionMesh(readSelection(selectionPath, dataset), dataset);
 }
 

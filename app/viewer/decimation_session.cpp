@@ -26,7 +26,7 @@ DecimationSession::DecimationSession(const Dataset& dataset, const TriangleError
   } else if (selection) {
     initial_ = selection->triangles;  // a baseline or hand-made selection: decimate on from it
   } else {
-    initial_ = ViewMesh::delaunay(samplePositions(dataset), {}, dataset.manifestPath().string()).triangles();
+    initial_ = datasetMesh(dataset, {}, dataset.manifestPath().string()).triangles();
   }
   initialSamples_ = ViewMesh(samplePositions(dataset), initial_).vertexCount();
   publish("loading panoramas for the error at " + std::to_string(settings.width) + "x" + std::to_string(settings.width / 2));

@@ -31,29 +31,52 @@ ViewMesh::ViewMesh(std::vector<glm::dvec2> positions, std::vector<Triangle> tria
   }
 }
 
-ViewMesh ViewMesh::delaunay(std::vector<glm::dvec2> positions, std::span<const int> samples, const std::string& subject) {
-  const size_t chosen = samples.empty() ? positions.size() : samples.size();
-  if (chosen < 3) throw InputError(subject, "at least 3 samples are needed to triangulate, got " + std::to_string(chosen));
-  std::optional<ViewMesh> mesh = tryDelaunay(std::move(positions), samples);
-  if (!mesh) throw InputError(subject, "the sample positions are collinear: they do not span an area to triangulate");
-  return std::move(*mesh);
-}
+namespace {
 
-std::optional<ViewMesh> ViewMesh::tryDelaunay(std::vector<glm::dvec2> positions, std::span<const int> samples) {
+// The Delaunay triangles of the chosen samples (canonical, sorted), empty
+// when they are fewer than 3 or collinear.
+std::vector<Triangle> delaunayOf(const std::vector<glm::dvec2>& positions, std::span<const int> samples) {
   std::vector<int> chosen(samples.begin(), samples.end());
   if (chosen.empty()) {
     for (size_t i = 0; i < positions.size(); ++i) chosen.push_back(int(i));
   }
-  if (chosen.size() < 3) return std::nullopt;
+  if (chosen.size() < 3) return {};
   std::vector<glm::dvec2> subset;
   for (int sample : chosen) subset.push_back(positions[size_t(sample)]);
   std::vector<Triangle> triangles = delaunayTriangles(subset);
-  if (triangles.empty()) return std::nullopt;
   for (Triangle& triangle : triangles) {
     for (int& vertex : triangle) vertex = chosen[size_t(vertex)];
     triangle = canonicalTriangle(triangle);
   }
   std::sort(triangles.begin(), triangles.end());
+  return triangles;
+}
+
+void keepInside(std::vector<Triangle>& triangles, const std::vector<glm::dvec2>& positions, const WalkableRegion* region) {
+  if (!region || region->empty()) return;
+  std::erase_if(triangles, [&](const Triangle& t) {
+    return !region->containsTriangle(positions[size_t(t[0])], positions[size_t(t[1])], positions[size_t(t[2])]);
+  });
+}
+
+}  // namespace
+
+ViewMesh ViewMesh::delaunay(std::vector<glm::dvec2> positions, std::span<const int> samples, const std::string& subject,
+                            const WalkableRegion* region) {
+  const size_t chosen = samples.empty() ? positions.size() : samples.size();
+  if (chosen < 3) throw InputError(subject, "at least 3 samples are needed to triangulate, got " + std::to_string(chosen));
+  std::vector<Triangle> triangles = delaunayOf(positions, samples);
+  if (triangles.empty()) throw InputError(subject, "the sample positions are collinear: they do not span an area to triangulate");
+  keepInside(triangles, positions, region);
+  if (triangles.empty()) throw InputError(subject, "no triangle of the samples lies inside the walkable region");
+  return ViewMesh(std::move(positions), std::move(triangles));
+}
+
+std::optional<ViewMesh> ViewMesh::tryDelaunay(std::vector<glm::dvec2> positions, std::span<const int> samples,
+                                              const WalkableRegion* region) {
+  std::vector<Triangle> triangles = delaunayOf(positions, samples);
+  keepInside(triangles, positions, region);
+  if (triangles.empty()) return std::nullopt;
   return ViewMesh(std::move(positions), std::move(triangles));
 }
 

@@ -6,6 +6,7 @@
 // point by walking from a hint (the viewer's last triangle).
 
 #include "core/geometry/planar_geometry.h"
+#include "core/geometry/walkable_region.h"
 
 #include <glm/glm.hpp>
 
@@ -24,10 +25,17 @@ public:
   ViewMesh(std::vector<glm::dvec2> positions, std::vector<Triangle> triangles);
 
   // The Delaunay triangulation of the given samples (all when empty).
-  // Throws InputError naming subject if they are collinear or fewer than 3.
-  static ViewMesh delaunay(std::vector<glm::dvec2> positions, std::span<const int> samples, const std::string& subject);
-  // The same, or nothing when the samples are fewer than 3 or collinear.
-  static std::optional<ViewMesh> tryDelaunay(std::vector<glm::dvec2> positions, std::span<const int> samples);
+  // With a region, only its triangles that lie inside the region are
+  // kept: no view triangle spans a wall or a pillar, and the references
+  // of each see each other's space (a region that is one convex room,
+  // such as a rectangle, keeps every triangle). Throws InputError naming
+  // subject if the samples are collinear or fewer than 3, or if no
+  // triangle lies inside the region.
+  static ViewMesh delaunay(std::vector<glm::dvec2> positions, std::span<const int> samples, const std::string& subject,
+                           const WalkableRegion* region = nullptr);
+  // The same, or nothing when no triangle is left.
+  static std::optional<ViewMesh> tryDelaunay(std::vector<glm::dvec2> positions, std::span<const int> samples,
+                                             const WalkableRegion* region = nullptr);
 
   const std::vector<Triangle>& triangles() const { return triangles_; }
   const std::vector<int>& vertices() const { return vertices_; }  // sorted sample indices

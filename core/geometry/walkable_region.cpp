@@ -126,6 +126,42 @@ bool WalkableRegion::contains(glm::dvec2 point) const {
   return false;
 }
 
+bool WalkableRegion::containsSegment(glm::dvec2 a, glm::dvec2 b) const {
+  // The boundary points on the segment cut it into pieces that are each
+  // wholly inside or wholly outside; a proper crossing means outside.
+  std::vector<double> cuts{0.0, 1.0};
+  const glm::dvec2 direction = b - a;
+  const double length2 = glm::dot(direction, direction);
+  for (const Ring* ring : ringsOf(polygons_)) {
+    for (size_t i = 0; i < ring->size(); ++i) {
+      const glm::dvec2 c = (*ring)[i], d = (*ring)[(i + 1) % ring->size()];
+      const int o1 = orientation(a, b, c), o2 = orientation(a, b, d), o3 = orientation(c, d, a), o4 = orientation(c, d, b);
+      if (o1 * o2 < 0 && o3 * o4 < 0) return false;
+      if (o1 == 0 && length2 > 0.0) {
+        const double t = glm::dot(c - a, direction) / length2;
+        if (t > 0.0 && t < 1.0) cuts.push_back(t);
+      }
+    }
+  }
+  std::sort(cuts.begin(), cuts.end());
+  if (!contains(a) || !contains(b)) return false;
+  for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+    if (cuts[k + 1] > cuts[k] && !contains(a + (0.5 * (cuts[k] + cuts[k + 1])) * direction)) return false;
+  }
+  return true;
+}
+
+bool WalkableRegion::containsTriangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) const {
+  if (orientation(a, b, c) < 0) std::swap(b, c);
+  if (!containsSegment(a, b) || !containsSegment(b, c) || !containsSegment(c, a)) return false;
+  for (const Ring* ring : ringsOf(polygons_)) {
+    for (glm::dvec2 p : *ring) {
+      if (orientation(a, b, p) > 0 && orientation(b, c, p) > 0 && orientation(c, a, p) > 0) return false;
+    }
+  }
+  return true;
+}
+
 double WalkableRegion::area() const {
   double area = 0.0;
   for (const RegionPolygon& polygon : polygons_) {

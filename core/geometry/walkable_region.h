@@ -37,6 +37,12 @@ public:
   bool empty() const { return polygons_.empty(); }
   // Inside or on the boundary.
   bool contains(glm::dvec2 point) const;
+  // Whether the closed segment lies in the region (it may run along the
+  // boundary, never outside it): a view edge that does not cross a wall.
+  bool containsSegment(glm::dvec2 a, glm::dvec2 b) const;
+  // Whether the closed triangle lies in the region: its edges do, and no
+  // boundary point (a pillar's hole) lies strictly inside it.
+  bool containsTriangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) const;
   double area() const;
   void bounds(glm::dvec2& lower, glm::dvec2& upper) const;
 

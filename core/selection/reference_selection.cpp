@@ -23,10 +23,12 @@ double meanTriangleError(TriangleErrorSource& errors, const std::vector<Triangle
 SelectionRun selectReferences(const Dataset& dataset, DatasetTriangleErrors& errors, const SelectionSettings& requested,
                               bool quiet) {
   SelectionRun run;
-  const ViewMesh initial = ViewMesh::delaunay(samplePositions(dataset), {}, dataset.manifestPath().string());
+  const ViewMesh initial = datasetMesh(dataset, {}, dataset.manifestPath().string());
   SelectionSettings settings = requested;
+  const WalkableRegion region = dataset.walkableRegion();
+  settings.refinement.region = &region;
   if (settings.areaWeights) {
-    const std::vector<double> weights = sampleAreaWeights(initial.positions(), dataset.walkableRegion());
+    const std::vector<double> weights = sampleAreaWeights(initial.positions(), region);
     settings.decimation.sampleWeights = weights;
     settings.refinement.sampleWeights = weights;
   }

@@ -66,6 +66,11 @@ std::vector<glm::dvec2> samplePositions(const Dataset& dataset) {
   return positions;
 }
 
+ViewMesh datasetMesh(const Dataset& dataset, std::span<const int> samples, const std::string& subject) {
+  const WalkableRegion region = dataset.walkableRegion();
+  return ViewMesh::delaunay(samplePositions(dataset), samples, subject, &region);
+}
+
 void writeSelection(const std::filesystem::path& path, const Selection& selection, const Dataset& dataset) {
   nlohmann::json samples = nlohmann::json::array();
   for (int s : selection.samples) samples.push_back(dataset.sample(s).id);

@@ -26,6 +26,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <span>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -57,5 +59,10 @@ ViewMesh selectionMesh(const Selection& selection, const Dataset& dataset);
 
 // (x, y) of every sample, by index.
 std::vector<glm::dvec2> samplePositions(const Dataset& dataset);
+
+// The Delaunay triangulation of the given samples (all when empty) over
+// the data set's positions, keeping the triangles inside its walkable
+// region (see ViewMesh::delaunay). Errors name subject.
+ViewMesh datasetMesh(const Dataset& dataset, std::span<const int> samples, const std::string& subject);
 
 }  // namespace triwalk

@@ -18,9 +18,9 @@ namespace {
 class ObjectiveEvaluator {
 public:
   ObjectiveEvaluator(std::span<const glm::dvec2> positions, std::span<const double> weights,
-                     ReconstructionErrorSource& errors, RefinementResult& result)
-      : positions_(positions.begin(), positions.end()), weights_(weights.begin(), weights.end()), errors_(errors),
-        result_(result) {}
+                     const WalkableRegion* region, ReconstructionErrorSource& errors, RefinementResult& result)
+      : positions_(positions.begin(), positions.end()), weights_(weights.begin(), weights.end()), region_(region),
+        errors_(errors), result_(result) {}
 
   std::vector<SampleReconstruction> assignments(const ViewMesh& mesh) const {
     std::vector<SampleReconstruction> requests;
@@ -66,12 +66,13 @@ public:
   }
 
   std::optional<ViewMesh> triangulate(const std::vector<int>& references) const {
-    return ViewMesh::tryDelaunay(positions_, references);
+    return ViewMesh::tryDelaunay(positions_, references, region_);
   }
 
 private:
   std::vector<glm::dvec2> positions_;
   std::vector<double> weights_;
+  const WalkableRegion* region_;
   ReconstructionErrorSource& errors_;
   RefinementResult& result_;
   std::map<SampleReconstruction, double> known_;
@@ -99,7 +100,7 @@ RefinementResult refineSelection(std::span<const glm::dvec2> positions, const st
                                  ReconstructionErrorSource& errors, const RefinementOptions& options,
                                  ProgressReporter* progress) {
   RefinementResult result;
-  ObjectiveEvaluator evaluator(positions, options.sampleWeights, errors, result);
+  ObjectiveEvaluator evaluator(positions, options.sampleWeights, options.region, errors, result);
   TRIWALK_CHECK(!current.empty(), "refining a selection needs its triangles");
   ViewMesh mesh(std::vector<glm::dvec2>(positions.begin(), positions.end()), current);
   std::vector<int> references = mesh.vertices();  // sorted

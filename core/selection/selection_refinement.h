@@ -44,6 +44,9 @@ struct RefinementOptions {
   double radius = 0.5;  // metres a reference may move per step; 0 disables refinement
   int maxPasses = 8;
   std::vector<double> sampleWeights;  // each sample's share of the area (empty: equal), for the mean
+  // The walkable region: the references are triangulated keeping only
+  // triangles inside it (see ViewMesh::delaunay); null or empty: all.
+  const WalkableRegion* region = nullptr;
 };
 
 struct RefinementResult {

@@ -43,23 +43,18 @@ void moveIntoPlace(const std::filesystem::path& staging, const std::filesystem::
 
 }  // namespace
 
-CapturePlan planCapture(const Scene& scene, const CaptureOptions& options) {
-  CapturePlan plan;
-  const WalkableArea& walkable = scene.walkableArea;
-  plan.area = options.area.value_or(glm::vec4(walkable.min, walkable.max));
-  plan.eyeZ = walkable.floorHeight + options.eyeHeight.value_or(walkable.eyeHeight);
+namespace {
+
+// Samples on parallel paths across the rectangle.
+void planRectangle(const CaptureOptions& options, CapturePlan& plan) {
   const glm::vec2 lower(plan.area.x, plan.area.y), upper(plan.area.z, plan.area.w);
   const glm::vec2 size = upper - lower;
   if (!(size.x > 0.0f && size.y > 0.0f)) throw InputError("--area", "x1 must exceed x0 and y1 must exceed y0");
-  if (options.width < 16 || options.width % 2 != 0) throw InputError("--width", "must be an even number >= 16");
-  if (options.probes < 0) throw InputError("--probes", "must not be negative");
-
   // Paths are parallel to the shorter side and spread along the longer.
   const bool pathsAlongY = size.y <= size.x;
   const float longSide = pathsAlongY ? size.x : size.y;
   const float shortSide = pathsAlongY ? size.y : size.x;
   if (options.spacing) {
-    if (!(*options.spacing > 0.0f)) throw InputError("--spacing", "must be positive");
     plan.paths = int(std::floor(longSide / *options.spacing + 1e-4f)) + 1;
     plan.perPath = int(std::floor(shortSide / *options.spacing + 1e-4f)) + 1;
   } else {
@@ -71,6 +66,7 @@ CapturePlan planCapture(const Scene& scene, const CaptureOptions& options) {
   }
   const float pathStep = options.spacing ? *options.spacing : longSide / float(plan.paths - 1);
   const float sampleStep = options.spacing ? *options.spacing : shortSide / float(plan.perPath - 1);
+  plan.spacing = std::min(pathStep, sampleStep);
   // Centre the grid when a spacing leaves a margin.
   const float pathOffset = 0.5f * (longSide - pathStep * float(plan.paths - 1));
   const float sampleOffset = 0.5f * (shortSide - sampleStep * float(plan.perPath - 1));
@@ -89,12 +85,71 @@ CapturePlan planCapture(const Scene& scene, const CaptureOptions& options) {
       plan.samples.push_back(sample);
     }
   }
+}
 
-  // Probes: uniform in the sampled rectangle, never on top of a sample.
+// Samples on a square lattice over the region's bounds, kept where the
+// region contains them; "path" and "step" are the lattice column and row,
+// so the uniform baseline can take a coarser sub-lattice.
+void planRegion(const CaptureOptions& options, const WalkableRegion& region, CapturePlan& plan) {
+  glm::dvec2 lower, upper;
+  region.bounds(lower, upper);
+  plan.area = glm::vec4(lower.x, lower.y, upper.x, upper.y);
+  const double spacing = options.spacing ? double(*options.spacing)
+                                         : std::sqrt(region.area() / double(std::max(1, options.paths * options.perPath)));
+  const glm::dvec2 extent = upper - lower;
+  plan.paths = std::max(1, int(std::ceil(extent.x / spacing - 1e-9)));
+  plan.perPath = std::max(1, int(std::ceil(extent.y / spacing - 1e-9)));
+  if (double(plan.paths) * double(plan.perPath) > 4e6) {
+    throw InputError("--spacing", "gives a lattice of over 4 million positions over the region; use a larger spacing");
+  }
+  plan.spacing = float(spacing);
+  // Centred in the bounds, so a lattice of cell centres stays on them.
+  const glm::dvec2 margin = 0.5 * (extent - spacing * glm::dvec2(plan.paths - 1, plan.perPath - 1));
+  for (int column = 0; column < plan.paths; ++column) {
+    for (int row = 0; row < plan.perPath; ++row) {
+      const glm::dvec2 xy = lower + margin + spacing * glm::dvec2(column, row);
+      if (!region.contains(xy)) continue;
+      ViewRecord sample;
+      sample.id = int(plan.samples.size());
+      sample.file = numberedFile("samples/s%04d.exr", sample.id);
+      sample.position = glm::vec3(glm::vec2(xy), plan.eyeZ);
+      sample.path = column;
+      sample.step = row;
+      plan.samples.push_back(sample);
+    }
+  }
+  if (plan.samples.size() < 3) {
+    throw InputError("--spacing", "leaves " + std::to_string(plan.samples.size()) +
+                                      " samples inside the walkable region; at least 3 are needed (use a smaller spacing)");
+  }
+}
+
+}  // namespace
+
+CapturePlan planCapture(const Scene& scene, const CaptureOptions& options) {
+  CapturePlan plan;
+  const WalkableArea& walkable = scene.walkableArea;
+  plan.area = options.area.value_or(glm::vec4(walkable.min, walkable.max));
+  plan.eyeZ = walkable.floorHeight + options.eyeHeight.value_or(walkable.eyeHeight);
+  if (options.width < 16 || options.width % 2 != 0) throw InputError("--width", "must be an even number >= 16");
+  if (options.probes < 0) throw InputError("--probes", "must not be negative");
+  if (options.spacing && !(*options.spacing > 0.0f)) throw InputError("--spacing", "must be positive");
+  if (options.region && !options.area) {
+    plan.region = options.region;
+    planRegion(options, *options.region, plan);
+  } else {
+    planRectangle(options, plan);
+  }
+
+  // Probes: uniform in the region (the rectangle), never on top of a sample.
+  const WalkableRegion region = plan.region ? *plan.region
+                                            : WalkableRegion::rectangle({plan.area.x, plan.area.y}, {plan.area.z, plan.area.w});
+  const glm::vec2 lower(plan.area.x, plan.area.y), size = glm::vec2(plan.area.z, plan.area.w) - lower;
   std::mt19937 engine(options.seed);
-  const float minimumSeparation = 0.05f * std::min(pathStep, sampleStep);
+  const float minimumSeparation = 0.05f * plan.spacing;
   while (int(plan.probes.size()) < options.probes) {
     const glm::vec2 xy = lower + glm::vec2(unitRandom(engine), unitRandom(engine)) * size;
+    if (plan.region && !region.contains(glm::dvec2(xy))) continue;
     bool onSample = false;
     for (const ViewRecord& sample : plan.samples) {
       onSample |= glm::length(glm::vec2(sample.position) - xy) < minimumSeparation;
@@ -162,9 +217,11 @@ CaptureSummary captureDataset(const Scene& scene, const std::string& sceneName, 
     manifest.height = options.width / 2;
     manifest.samples = plan.samples;
     manifest.probes = plan.probes;
+    if (plan.region) manifest.walkable = *plan.region;
     manifest.capture = {{"paths", plan.paths},
                         {"per_path", plan.perPath},
                         {"area", {plan.area.x, plan.area.y, plan.area.z, plan.area.w}},
+                        {"spacing", plan.spacing},
                         {"eye_z", plan.eyeZ},
                         {"face_size", options.faceSize > 0 ? options.faceSize : defaultCubeFaceSize(options.width)},
                         {"probe_seed", options.seed}};

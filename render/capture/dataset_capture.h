@@ -1,7 +1,8 @@
 #pragma once
 // Capture of a data set: the dense samples on parallel paths across the
-// walkable area (as the paper's 30 paths x 15 images) and held-out probes
-// at random positions inside it, rendered headless and written as
+// walkable area (as the paper's 30 paths x 15 images), or on a square
+// lattice clipped to a walkable region, and held-out probes at random
+// positions inside it, rendered headless and written as
 // manifest.json + one OpenEXR per view.
 
 #include "core/io/dataset.h"
@@ -17,6 +18,11 @@ struct CaptureOptions {
   int perPath = 15;          // samples per path, along the shorter side
   std::optional<float> spacing;  // metres; if set, derives paths and perPath from the area
   std::optional<glm::vec4> area;  // x0, y0, x1, y1; default: the scene's walkable area
+  // A walkable region of any shape instead of the rectangle: samples on a
+  // square lattice of `spacing` clipped to it (default spacing: about
+  // paths x perPath samples), probes uniform inside it; stored in the
+  // manifest.
+  std::optional<WalkableRegion> region;
   std::optional<float> eyeHeight;  // metres above the floor; default: the scene's
   int width = 1024;          // panorama width; height = width / 2
   int faceSize = 0;          // cube face resolution, 0 = defaultCubeFaceSize(width)
@@ -28,10 +34,12 @@ struct CaptureOptions {
 struct CapturePlan {
   std::vector<ViewRecord> samples;
   std::vector<ViewRecord> probes;
-  int paths = 0;
-  int perPath = 0;
-  glm::vec4 area{0.0f};
+  int paths = 0;    // lattice columns over a region
+  int perPath = 0;  // lattice rows over a region
+  glm::vec4 area{0.0f};  // the rectangle, or the region's bounds
   float eyeZ = 0.0f;
+  float spacing = 0.0f;  // between neighbouring samples (along a path for the rectangle)
+  std::optional<WalkableRegion> region;
 };
 
 // Positions and file names of every view; validates the options.

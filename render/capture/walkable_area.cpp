@@ -1,47 +1,21 @@
 #include "render/capture/walkable_area.h"
 
+#include "core/geometry/cell_region.h"
 #include "core/support/errors.h"
+#include "render/capture/panorama_capturer.h"
 #include "core/support/progress.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 
 namespace triwalk {
 
 namespace {
 
 constexpr float kSpawnAboveFloor = 0.61f;  // Quake 3 spawn origins stand 24 units above the floor
-constexpr float kSpawnReach = 8.0f;        // metres probed around a spawn point
-
-struct Rectangle {
-  int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
-  int cells() const { return (x1 - x0 + 1) * (y1 - y0 + 1); }
-};
-
-// Largest all-true rectangle of a grid (histogram method, row by row)
-// whose sides differ by at most a factor 3: a long corridor makes a poor
-// walkthrough area (paths across it would be a few samples long).
-Rectangle largestRectangle(const std::vector<std::vector<bool>>& walkable) {
-  Rectangle best;
-  if (walkable.empty()) return best;
-  const int rows = int(walkable.size()), columns = int(walkable[0].size());
-  std::vector<int> heights(size_t(columns), 0);
-  for (int y = 0; y < rows; ++y) {
-    for (int x = 0; x < columns; ++x) heights[size_t(x)] = walkable[size_t(y)][size_t(x)] ? heights[size_t(x)] + 1 : 0;
-    for (int x = 0; x < columns; ++x) {
-      int height = heights[size_t(x)];
-      for (int right = x; right < columns && height > 0; ++right) {
-        height = std::min(height, heights[size_t(right)]);
-        const int width = right - x + 1;
-        const Rectangle candidate{x, y - std::min(height, 3 * width) + 1, right, y};
-        if (width <= 3 * height && candidate.cells() > best.cells()) best = candidate;
-      }
-    }
-  }
-  return best;
-}
 
 bool walkableView(const Panorama& panorama, float eyeHeight) {
   size_t finite = 0;
@@ -75,81 +49,163 @@ float dominantFloorHeight(const Scene& scene) {
   return float(largest->first) * 0.05f;
 }
 
-WalkableAreaProposal proposeWalkableArea(const Scene& scene, float eyeHeight, float spacing, const std::string& subject,
-                                         bool quiet) {
+namespace {
+
+struct Seed {
+  int floor = 0;  // index into the candidate floors
+  glm::vec2 position{0.0f};
+  const char* origin = "";
+};
+
+// Probes cells on demand, once each, per floor.
+class CellProber {
+public:
+  CellProber(const Scene& scene, const CellGrid& grid, const std::vector<float>& floors, float eyeHeight,
+             ProgressReporter& progress)
+      : capturer_(scene, 32, 16), grid_(grid), floors_(floors), eyeHeight_(eyeHeight), progress_(progress),
+        state_(floors.size(), std::vector<int8_t>(grid.marked.size(), -1)) {}
+
+  bool walkable(int floor, int x, int y) {
+    if (x < 0 || y < 0 || x >= grid_.columns || y >= grid_.rows) return false;
+    int8_t& state = state_[size_t(floor)][size_t(y) * size_t(grid_.columns) + size_t(x)];
+    if (state < 0) {
+      throwIfInterrupted();
+      const glm::dvec2 centre = grid_.centre(x, y);
+      state = walkableView(capturer_.capture(glm::vec3(centre.x, centre.y, floors_[size_t(floor)] + eyeHeight_)), eyeHeight_);
+      ++probed_;
+      progress_.advance();
+    }
+    return state == 1;
+  }
+  int probed() const { return probed_; }
+
+private:
+  PanoramaCapturer capturer_;
+  const CellGrid& grid_;
+  const std::vector<float>& floors_;
+  float eyeHeight_;
+  ProgressReporter& progress_;
+  std::vector<std::vector<int8_t>> state_;  // -1 unknown, 0 no, 1 walkable
+  int probed_ = 0;
+};
+
+constexpr float kSeedReach = 2.0f;  // metres searched around a seed that is not walkable itself
+
+}  // namespace
+
+WalkableRegionProposal proposeWalkableRegion(const Scene& scene, const RegionSearchOptions& options,
+                                             const std::string& subject) {
   glm::vec3 lower, upper;
   scene.bounds(lower, upper);
-  // Candidate floors: each spawn point's, or the dominant one.
-  std::vector<float> floors;
-  for (const glm::vec3& spawn : scene.spawnPoints) {
-    const float floor = spawn.z - kSpawnAboveFloor;
-    if (std::none_of(floors.begin(), floors.end(), [&](float f) { return std::abs(f - floor) < 0.3f; })) floors.push_back(floor);
-  }
-  const bool fromSpawns = !floors.empty();
-  if (!fromSpawns) floors.push_back(dominantFloorHeight(scene));
+  const double cell = options.cellSize;
+  CellGrid grid(glm::dvec2(lower.x, lower.y), cell, std::max(1, int(std::ceil((upper.x - lower.x) / cell))),
+                std::max(1, int(std::ceil((upper.y - lower.y) / cell))));
 
-  PanoramaCapturer capturer(scene, 32, 16);
-  const int columns = std::max(1, int((upper.x - lower.x) / spacing)), rows = std::max(1, int((upper.y - lower.y) / spacing));
-  const auto positionAt = [&](int x, int y, float floor) {
-    return glm::vec3(lower.x + (float(x) + 0.5f) * spacing, lower.y + (float(y) + 0.5f) * spacing, floor + eyeHeight);
+  // Candidate floors: each spawn point's, and the dominant one.
+  std::vector<float> floors;
+  const auto floorIndex = [&](float floor) {
+    for (size_t f = 0; f < floors.size(); ++f) {
+      if (std::abs(floors[f] - floor) < 0.3f) return int(f);
+    }
+    floors.push_back(floor);
+    return int(floors.size()) - 1;
   };
-  // On a spawn floor, only around that floor's spawn points.
-  const auto worthProbing = [&](glm::vec3 position, float floor) {
-    return !fromSpawns || std::any_of(scene.spawnPoints.begin(), scene.spawnPoints.end(), [&](const glm::vec3& spawn) {
-      return std::abs(spawn.z - kSpawnAboveFloor - floor) < 0.3f && glm::length(glm::vec2(spawn - position)) < kSpawnReach;
-    });
-  };
-  // The cells each floor probes, listed first so that progress knows the total.
-  std::vector<std::vector<glm::ivec2>> cellsToProbe(floors.size());
-  size_t toProbe = 0;
-  for (size_t f = 0; f < floors.size(); ++f) {
-    for (int y = 0; y < rows; ++y) {
-      for (int x = 0; x < columns; ++x) {
-        if (worthProbing(positionAt(x, y, floors[f]), floors[f])) cellsToProbe[f].emplace_back(x, y);
+  std::vector<Seed> seeds;
+  const int dominant = floorIndex(dominantFloorHeight(scene));
+  if (!options.starts.empty()) {
+    // A start is tried on every floor the scene has; the fill keeps the floors it walks on.
+    for (const glm::vec3& spawn : scene.spawnPoints) floorIndex(spawn.z - kSpawnAboveFloor);
+    for (const glm::vec2 start : options.starts) {
+      for (int f = 0; f < int(floors.size()); ++f) seeds.push_back({f, start, "--start"});
+    }
+  } else if (!scene.spawnPoints.empty()) {
+    for (const glm::vec3& spawn : scene.spawnPoints) seeds.push_back({floorIndex(spawn.z - kSpawnAboveFloor), glm::vec2(spawn), "spawn points"});
+  } else {
+    seeds.push_back({dominant, 0.5f * glm::vec2(lower + upper), "the scene's centre"});
+  }
+
+  // The probes see the scene without its door leaves: a closed door joins
+  // two rooms as an open one would.
+  Scene solid = scene;
+  std::erase_if(solid.meshes, [&](const SceneMesh& mesh) { return scene.materials[size_t(mesh.material)].passable; });
+  InterruptScope interruptScope;
+  ProgressReporter progress("find walkable region: cells probed", 0, options.quiet);
+  CellProber prober(solid, grid, floors, options.eyeHeight, progress);
+  std::vector<CellGrid> reached(floors.size(), CellGrid(grid.origin, cell, grid.columns, grid.rows));
+  std::vector<glm::ivec2> queue;
+  for (const Seed& seed : seeds) {
+    CellGrid& fill = reached[size_t(seed.floor)];
+    const glm::ivec2 home(glm::floor((glm::dvec2(seed.position) - grid.origin) / cell));
+    // The seed's own cell, else the nearest walkable one within reach (rings outward).
+    std::optional<glm::ivec2> start;
+    const int reach = int(std::ceil(kSeedReach / cell));
+    for (int ring = 0; ring <= reach && !start; ++ring) {
+      for (int y = home.y - ring; y <= home.y + ring && !start; ++y) {
+        for (int x = home.x - ring; x <= home.x + ring && !start; ++x) {
+          if (std::max(std::abs(x - home.x), std::abs(y - home.y)) != ring) continue;
+          if (prober.walkable(seed.floor, x, y)) start = glm::ivec2(x, y);
+        }
       }
     }
-    toProbe += cellsToProbe[f].size();
-  }
-  // A level without spawn points is probed over its whole bounding box:
-  // minutes on a large one, so it shows progress and stops on Ctrl-C.
-  InterruptScope interruptScope;
-  ProgressReporter progress("find walkable area: positions probed", toProbe, quiet);
-  WalkableAreaProposal best;
-  int bestCells = 0;
-  for (size_t f = 0; f < floors.size(); ++f) {
-    const float floor = floors[f];
-    std::vector<std::vector<bool>> walkable(size_t(rows), std::vector<bool>(size_t(columns), false));
-    int count = 0;
-    for (const glm::ivec2 cell : cellsToProbe[f]) {
-      throwIfInterrupted();
-      const bool ok = walkableView(capturer.capture(positionAt(cell.x, cell.y, floor)), eyeHeight);
-      progress.advance();
-      walkable[size_t(cell.y)][size_t(cell.x)] = ok;
-      count += ok;
+    if (!start || fill.at(start->x, start->y)) continue;  // none, or already reached from another seed
+    fill.set(start->x, start->y, true);
+    queue.assign(1, *start);
+    for (size_t next = 0; next < queue.size(); ++next) {
+      for (const glm::ivec2 step : {glm::ivec2(1, 0), glm::ivec2(-1, 0), glm::ivec2(0, 1), glm::ivec2(0, -1)}) {
+        const glm::ivec2 neighbour = queue[next] + step;
+        if (fill.at(neighbour.x, neighbour.y) || !prober.walkable(seed.floor, neighbour.x, neighbour.y)) continue;
+        fill.set(neighbour.x, neighbour.y, true);
+        queue.push_back(neighbour);
+      }
+      if (next % 64 == 0) {
+        progress.setStatus(std::to_string(fill.count()) + " walkable, " + std::to_string(queue.size() - next) + " to expand");
+      }
     }
-    const int probed = int(cellsToProbe[f].size());
-    const Rectangle rectangle = largestRectangle(walkable);
-    // At least 2 x 2 positions: the area must have a width and a depth.
-    if (rectangle.x1 <= rectangle.x0 || rectangle.y1 <= rectangle.y0 || rectangle.cells() <= bestCells) continue;
-    bestCells = rectangle.cells();
-    best.area = {lower.x + float(rectangle.x0) * spacing + 0.5f * spacing, lower.y + float(rectangle.y0) * spacing + 0.5f * spacing,
-                 lower.x + float(rectangle.x1) * spacing + 0.5f * spacing, lower.y + float(rectangle.y1) * spacing + 0.5f * spacing};
-    best.floorZ = floor;
-    best.walkableCells = count;
-    best.probedCells = probed;
   }
   progress.finish();
-  if (bestCells == 0) {
-    throw InputError(subject, "no walkable area found automatically (no enclosed positions with a floor at eye height); "
-                              "give --area and --eye-height");
+
+  // Per floor: parts without corner contacts; parts under a tenth of the
+  // largest (a ledge, a nook behind a pillar) are dropped. The floor with
+  // the most walkable area wins.
+  WalkableRegionProposal best;
+  int bestCells = 0, bestFloor = -1;
+  CellGrid bestGrid;
+  for (size_t f = 0; f < floors.size(); ++f) {
+    CellGrid fill = reached[f];
+    removeCornerContacts(fill);
+    int partCount = 0;
+    const std::vector<int> labels = connectedParts(fill, partCount);
+    std::vector<int> sizes(size_t(partCount), 0);
+    for (int label : labels) {
+      if (label >= 0) ++sizes[size_t(label)];
+    }
+    const int largest = sizes.empty() ? 0 : *std::max_element(sizes.begin(), sizes.end());
+    int kept = 0, keptParts = 0;
+    for (int label = 0; label < partCount; ++label) keptParts += sizes[size_t(label)] >= std::max(4, largest / 10);
+    for (size_t i = 0; i < labels.size(); ++i) {
+      const bool keep = labels[i] >= 0 && sizes[size_t(labels[i])] >= std::max(4, largest / 10);
+      fill.marked[i] = keep;
+      kept += keep;
+    }
+    if (kept <= bestCells) continue;
+    bestCells = kept, bestFloor = int(f), best.parts = keptParts;
+    bestGrid = std::move(fill);
   }
-  char reason[256];
+  if (bestFloor < 0) {
+    throw InputError(subject, "no walkable region found automatically: no position near " + std::string(seeds.front().origin) +
+                                  " is enclosed, clear of geometry and " + std::to_string(options.eyeHeight) +
+                                  " m above a floor; give --start, --region or --area");
+  }
+  best.region = regionFromCells(bestGrid, subject);
+  best.floorZ = floors[size_t(bestFloor)];
+  best.walkableCells = bestCells;
+  best.probedCells = prober.probed();
+  char reason[320];
   std::snprintf(reason, sizeof reason,
-                "automatic walkable area [%.2f, %.2f] x [%.2f, %.2f] m on the floor at z = %.2f m (%s): %d of %d probed "
-                "positions are enclosed with a floor at eye height, this is their largest rectangle",
-                best.area.x, best.area.z, best.area.y, best.area.w, best.floorZ,
-                fromSpawns ? "from the level's spawn points" : "the largest horizontal surface", best.walkableCells,
-                best.probedCells);
+                "automatic walkable region: %.1f m2 in %d part%s on the floor at z = %.2f m, flood fill of %.2f m cells from "
+                "%s (%d walkable of %d probed)",
+                best.region.area(), best.parts, best.parts == 1 ? "" : "s", best.floorZ, cell, seeds.front().origin,
+                best.walkableCells, best.probedCells);
   best.reason = reason;
   return best;
 }

@@ -1,33 +1,45 @@
 #pragma once
-// An automatic walkable area for scenes that do not state one: positions
-// on a grid at eye height are probed with small panoramas, and a position
-// counts as walkable when its view is enclosed (almost every direction
-// meets a surface: inside, not outdoors or outside the level), nothing is
-// within reach of the head, and a floor lies at eye height below. The
-// largest rectangle of walkable positions becomes the area. Floors come
-// from the level's spawn points where it has them, else from the largest
-// upward-facing surface.
+// The automatic walkable region of a scene that does not state one: a
+// flood fill over a grid of floor cells, from seeds, through positions a
+// person could stand at. A cell is walkable when a small panorama at eye
+// height above its centre is enclosed (almost every direction meets a
+// surface: inside, not outdoors or outside the level), nothing is within
+// reach of the head (so no wall runs between two walkable neighbours: the
+// clearance is at least the cell size), and a floor lies at eye height
+// below. Only cells the fill reaches are probed. The reached cells become
+// a region of polygons with holes (core/geometry/cell_region.h).
 
-#include "render/capture/panorama_capturer.h"
+#include "core/geometry/walkable_region.h"
 #include "render/scene/scene.h"
 
-#include <span>
 #include <string>
+#include <vector>
 
 namespace triwalk {
 
-struct WalkableAreaProposal {
-  glm::vec4 area{0.0f};  // x0, y0, x1, y1, metres
-  float floorZ = 0.0f;
-  int walkableCells = 0;
-  int probedCells = 0;
-  std::string reason;    // what was chosen and why, for the report
+struct RegionSearchOptions {
+  float eyeHeight = 1.6f;  // metres above the floor
+  float cellSize = 0.25f;  // metres; at most twice the head clearance (0.25 m)
+  // Seeds on the floor plane (--start). Default: the level's spawn points,
+  // else the centre of the scene's bounds.
+  std::vector<glm::vec2> starts;
+  bool quiet = false;
 };
 
-// Needs a current GL context. eyeHeight in metres above the floor;
-// spacing is the probe grid's. Throws InputError when nothing is walkable.
-WalkableAreaProposal proposeWalkableArea(const Scene& scene, float eyeHeight, float spacing, const std::string& subject,
-                                         bool quiet = false);
+struct WalkableRegionProposal {
+  WalkableRegion region;
+  float floorZ = 0.0f;
+  int parts = 0;
+  int walkableCells = 0;
+  int probedCells = 0;
+  std::string reason;  // how it was found, for the report
+};
+
+// Needs a current GL context. Shows progress and stops on Ctrl-C
+// (Interrupted). Throws InputError naming subject when no seed reaches a
+// walkable position.
+WalkableRegionProposal proposeWalkableRegion(const Scene& scene, const RegionSearchOptions& options,
+                                             const std::string& subject);
 
 // The height of the largest upward-facing surface area (the main floor).
 float dominantFloorHeight(const Scene& scene);

@@ -109,6 +109,27 @@ private:
   std::map<std::string, int> loaded_;
 };
 
+// The meshes of IFC door elements: the IFC importer names their nodes
+// "IfcDoor_<name>_<id>".
+void collectDoorMeshes(const aiNode& node, bool inDoor, std::vector<bool>& doorMesh) {
+  inDoor |= std::string(node.mName.C_Str()).rfind("IfcDoor_", 0) == 0;
+  if (inDoor) {
+    for (unsigned i = 0; i < node.mNumMeshes; ++i) doorMesh[node.mMeshes[i]] = true;
+  }
+  for (unsigned i = 0; i < node.mNumChildren; ++i) collectDoorMeshes(*node.mChildren[i], inDoor, doorMesh);
+}
+
+// Materials that only door meshes use (a material shared with a wall stays solid).
+std::vector<bool> doorOnlyMaterials(const aiScene& scene, int& doorMeshes) {
+  std::vector<bool> doorMesh(scene.mNumMeshes, false);
+  collectDoorMeshes(*scene.mRootNode, false, doorMesh);
+  doorMeshes = int(std::count(doorMesh.begin(), doorMesh.end(), true));
+  std::vector<bool> door(scene.mNumMaterials, false), solid(scene.mNumMaterials, false);
+  for (unsigned i = 0; i < scene.mNumMeshes; ++i) (doorMesh[i] ? door : solid)[scene.mMeshes[i]->mMaterialIndex] = true;
+  for (unsigned m = 0; m < scene.mNumMaterials; ++m) door[m] = door[m] && !solid[m];
+  return door;
+}
+
 }  // namespace
 
 Scene importScene(const std::filesystem::path& file, const ImportOptions& options, ImportReport& report) {
@@ -143,13 +164,18 @@ Scene importScene(const std::filesystem::path& file, const ImportOptions& option
 
   Assimp::Importer importer;
   const aiScene* imported = importer.ReadFile(
-      readPath.string(), aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_GenSmoothNormals |
-                             aiProcess_JoinIdenticalVertices * (quake3 ? 0 : 1));
+      readPath.string(), aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices * (quake3 ? 0 : 1));
   if (!temporary.empty()) std::filesystem::remove(temporary);
   if (!imported || !imported->mRootNode || imported->mNumMeshes == 0) {
     const std::string reason = importer.GetErrorString();
     throw InputError(file.string(), "cannot import scene: " + (reason.empty() ? std::string("no meshes") : reason));
   }
+  // Door elements are known by their nodes, which flattening the node
+  // graph removes; their materials (the IFC importer gives every mesh its
+  // own) survive it.
+  const std::vector<bool> doorMaterial = doorOnlyMaterials(*imported, report.doorMeshes);
+  imported = importer.ApplyPostProcessing(aiProcess_PreTransformVertices);
+  if (!imported || imported->mNumMeshes == 0) throw InputError(file.string(), "cannot import scene: " + std::string(importer.GetErrorString()));
 
   const float scale = options.unitScale > 0.0f ? options.unitScale : (quake3 ? 0.0254f : 1.0f);
   const std::string up = options.upAxis == "auto" ? (quake3 ? "z" : "y") : options.upAxis;
@@ -194,6 +220,7 @@ Scene importScene(const std::filesystem::path& file, const ImportOptions& option
       material.specular = std::min(strength, 1.0f) * 0.5f;
       material.shininess = shininess;
     }
+    material.passable = doorMaterial[m];
     materialOf[m] = int(scene.materials.size());
     scene.materials.push_back(material);
   }

@@ -24,6 +24,7 @@ struct ImportReport {
   std::vector<std::string> missingTextures;
   int texturesLoaded = 0;
   std::vector<glm::vec3> spawnPoints;       // metres, world frame (Quake 3)
+  int doorMeshes = 0;                       // IFC door elements, marked passable
 };
 
 // Throws InputError naming the file for a missing, corrupt or unsupported scene.

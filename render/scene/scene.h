@@ -38,6 +38,9 @@ struct SceneMaterial {
   float shininess = 32.0f;
   bool alphaTest = false;     // discard texels with alpha < 0.5
   bool useVertexColor = false;
+  // A door leaf (an IFC door element): drawn, but the automatic walkable
+  // region passes through it, as a person opens a door.
+  bool passable = false;
 };
 
 struct SceneMesh {

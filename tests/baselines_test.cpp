@@ -30,6 +30,26 @@ TEST_CASE("uniform: a regular sub-grid of the capture paths with the corners, ne
   CHECK(grid == expected);
 }
 
+TEST_CASE("uniform on a lattice clipped to an L-shaped region: a coarser sub-lattice of it, near the count") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory.path(), 11, 6, 16, 0);
+  // Clip the 11 x 6 lattice to an L: no samples with path >= 6 and step >= 3.
+  Manifest manifest = Dataset::open(directory.path()).manifest();
+  std::erase_if(manifest.samples, [](const ViewRecord& s) { return s.path >= 6 && s.step >= 3; });
+  for (size_t i = 0; i < manifest.samples.size(); ++i) manifest.samples[i].id = int(i);
+  writeManifest(directory.path(), manifest);
+  const Dataset dataset = Dataset::open(directory.path());
+  REQUIRE(dataset.sampleCount() == 66 - 15);
+  // Every second path and step from (0, 0): 6 x 3 minus the 3 x 1 the L
+  // lacks, 15 samples, evenly spaced.
+  const std::vector<int> selection = uniformSelection(dataset, 15);
+  std::set<std::pair<int, int>> grid;
+  for (int s : selection) grid.insert({dataset.sample(s).path, dataset.sample(s).step});
+  const std::set<std::pair<int, int>> expected = {{0, 0}, {0, 2}, {0, 4}, {2, 0}, {2, 2}, {2, 4}, {4, 0}, {4, 2},
+                                                  {4, 4}, {6, 0}, {6, 2}, {8, 0}, {8, 2}, {10, 0}, {10, 2}};
+  CHECK(grid == expected);
+}
+
 TEST_CASE("uniform without paths: a square lattice snapped to irregular samples, near the count, corners included") {
   // A 10 x 5 m area sampled irregularly: a jittered 0.5 m grid with every
   // seventh position missing (an imported capture has no paths).

@@ -43,6 +43,43 @@ std::vector<int> latticeSelection(std::span<const glm::dvec2> positions, int cou
   return best;
 }
 
+namespace {
+
+// Every sx-th column and sy-th row of a clipped lattice, from offsets
+// (ox, oy): of all strides with a spacing ratio up to 2 and all offsets,
+// the one scoring lowest on three times the relative count mismatch plus
+// the log of the stride ratio (ties: smaller strides, then offsets).
+std::vector<int> subLatticeSelection(const std::map<std::pair<int, int>, int>& grid, int count) {
+  int columns = 0, rows = 0;
+  for (const auto& [cell, sample] : grid) columns = std::max(columns, cell.first + 1), rows = std::max(rows, cell.second + 1);
+  std::vector<int> best;
+  double bestScore = std::numeric_limits<double>::max();
+  for (int sx = 1; sx <= columns; ++sx) {
+    for (int sy = 1; sy <= rows; ++sy) {
+      // A stride pair keeps about one sample in sx * sy; far from count, no offset helps.
+      const double kept = double(grid.size()) / double(sx * sy);
+      if (sx > 2 * sy || sy > 2 * sx || kept > 3.0 * count || 3.0 * kept < count) continue;
+      for (int ox = 0; ox < sx; ++ox) {
+        for (int oy = 0; oy < sy; ++oy) {
+          int n = 0;
+          for (const auto& [cell, sample] : grid) n += cell.first % sx == ox && cell.second % sy == oy;
+          const double score = 3.0 * std::abs(double(n - count)) / double(count) + std::abs(std::log(double(sx) / sy));
+          if (n < 3 || score >= bestScore) continue;
+          bestScore = score;
+          best.clear();
+          for (const auto& [cell, sample] : grid) {
+            if (cell.first % sx == ox && cell.second % sy == oy) best.push_back(sample);
+          }
+        }
+      }
+    }
+  }
+  std::sort(best.begin(), best.end());
+  return best;
+}
+
+}  // namespace
+
 std::vector<int> uniformSelection(const Dataset& dataset, int count) {
   std::map<std::pair<int, int>, int> grid;  // (path, step) -> sample index
   int paths = 0, steps = 0;
@@ -55,10 +92,8 @@ std::vector<int> uniformSelection(const Dataset& dataset, int count) {
     paths = std::max(paths, sample.path + 1);
     steps = std::max(steps, sample.step + 1);
   }
-  if (!onPaths || int(grid.size()) != paths * steps || int(grid.size()) != dataset.sampleCount() || paths < 2 ||
-      steps < 2) {
-    return latticeSelection(samplePositions(dataset), count);
-  }
+  if (!onPaths || int(grid.size()) != dataset.sampleCount()) return latticeSelection(samplePositions(dataset), count);
+  if (int(grid.size()) != paths * steps || paths < 2 || steps < 2) return subLatticeSelection(grid, count);
   // Spacing of the dense grid along both axes, from the first path and step.
   const glm::dvec2 origin(dataset.sample(grid.at({0, 0})).position);
   const double pathSpan = glm::length(glm::dvec2(dataset.sample(grid.at({paths - 1, 0})).position) - origin);

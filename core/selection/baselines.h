@@ -1,9 +1,10 @@
 #pragma once
 // The selections edge collapse is compared with, at the same sample count:
 //   uniform:  a regular sub-grid of the capture paths (the paper's (b)),
-//             or, for samples without a complete grid of paths (imported
-//             or irregular captures), a regular lattice over their
-//             bounding box, each node snapped to its nearest sample,
+//             a coarser sub-lattice of a region's capture lattice, or,
+//             for samples without lattice coordinates (imported or
+//             irregular captures), a regular lattice over their bounding
+//             box, each node snapped to its nearest sample,
 //   k-medoids: position-only clustering, as MPEG's immersive-video test
 //             model picks basic views,
 //   random:   a seeded random subset.
@@ -21,7 +22,10 @@ namespace triwalk {
 
 // With each sample's path and step on a complete grid: a sub-grid of paths
 // and steps near count samples with even spacing (it may hold a few more
-// or fewer), corners included. Otherwise latticeSelection.
+// or fewer), corners included. With distinct paths and steps that do not
+// fill their grid (a lattice clipped to a region): every sx-th column and
+// sy-th row from an offset, the strides and offset whose count comes
+// nearest count with the most even spacing. Otherwise latticeSelection.
 std::vector<int> uniformSelection(const Dataset& dataset, int count);
 
 // A regular lattice of square cells over the positions' bounding box,

@@ -23,9 +23,9 @@ void registerBenchCommand(CLI::App& app) {
   };
   auto arguments = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand("bench", "Measure throughput and print a table (machine, sizes, figures)");
-  command->add_option("--only", arguments->only, "Run only these groups: capture, decimate, warp, render, viewer")
+  command->add_option("--only", arguments->only, "Run only these groups: capture, region, decimate, warp, render, viewer")
       ->delimiter(',')
-      ->check(CLI::IsMember({"capture", "decimate", "warp", "render", "viewer"}));
+      ->check(CLI::IsMember({"capture", "region", "decimate", "warp", "render", "viewer"}));
   command->add_option("--gl", arguments->gl, "Headless OpenGL: auto, egl or osmesa")->capture_default_str();
   command->add_option("--capture-views", arguments->captureViews, "Panoramas rendered for the capture figure")
       ->capture_default_str()->check(positiveNumber());
@@ -45,6 +45,7 @@ void registerBenchCommand(CLI::App& app) {
       const BenchViews views = captureBenchViews();
       benchCapture(table, views.scene, 1024, arguments->captureViews);
     }
+    if (selected("region")) benchRegion(table, "/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc");
     if (selected("decimate")) {
       benchDecimate(table, loadSceneDescription(builtinScenePath()), arguments->dataset, arguments->decimationWidth);
     }

@@ -8,6 +8,7 @@
 #include "render/scene/scene.h"
 
 #include <chrono>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,8 @@ void benchWarp(BenchTable& table, const BenchViews& views, int decimationWidth);
 void benchRender(BenchTable& table, const BenchViews& views, int frames);
 // The viewer's frame loop along a walk (selection empty: the dense mesh).
 void benchViewer(BenchTable& table, const Dataset& dataset, const std::string& selection, int frames);
+// The automatic walkable region of an imported scene (the FZK house).
+void benchRegion(BenchTable& table, const std::filesystem::path& scenePath);
 // datasetDirectory empty: captures the default data set first.
 void benchDecimate(BenchTable& table, const Scene& scene, const std::string& datasetDirectory, int errorWidth);
 

@@ -121,4 +121,18 @@ TEST_CASE("a scene where nobody can stand gives a one-line error") {
                              "no walkable region found");
 }
 
+TEST_CASE("a given region stands on the floor under it, not on the level's largest floor elsewhere") {
+  testing::TemporaryDirectory directory;
+  // The two rooms, plus a 20 x 20 m platform away from them at z = 5: the
+  // largest horizontal surface of the scene, but under no part of the region.
+  std::string json = kTwoRooms;
+  json.insert(json.rfind(']'), R"(, {"type": "box", "material": "plain", "min": [20, 0, 4.8], "max": [40, 20, 5.0]})");
+  const Scene scene = sceneFrom(directory, "rooms_and_platform.json", json);
+  REQUIRE(dominantFloorHeight(scene) > 4.0f);
+  const WalkableRegion region = WalkableRegion::rectangle({0.5, 0.5}, {7.5, 2.5});
+  CHECK(floorHeightUnder(scene, region) == doctest::Approx(0.0));
+  // Over the platform, the platform: the choice follows the region.
+  CHECK(floorHeightUnder(scene, WalkableRegion::rectangle({21, 1}, {39, 19})) == doctest::Approx(5.0));
+}
+
 }  // namespace triwalk

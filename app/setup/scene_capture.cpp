@@ -22,7 +22,7 @@ CaptureSummary captureScene(const SceneCaptureRequest& request) {
     loaded.scene.walkableArea.floorHeight = proposal.floorZ;
     loaded.scene.walkableArea.eyeHeight = search.eyeHeight;
   } else if (options.region && loaded.imported) {
-    loaded.scene.walkableArea.floorHeight = dominantFloorHeight(loaded.scene);
+    loaded.scene.walkableArea.floorHeight = floorHeightUnder(loaded.scene, *options.region);
   }
   const CapturePlan plan = planCapture(loaded.scene, options);
   if (plan.region) {

@@ -1,6 +1,7 @@
 #include "render/capture/walkable_area.h"
 
 #include "core/geometry/cell_region.h"
+#include "core/geometry/planar_geometry.h"
 #include "core/support/errors.h"
 #include "render/capture/panorama_capturer.h"
 #include "core/support/progress.h"
@@ -47,6 +48,57 @@ float dominantFloorHeight(const Scene& scene) {
   const auto largest = std::max_element(areaByHeight.begin(), areaByHeight.end(),
                                         [](const auto& x, const auto& y) { return x.second < y.second; });
   return float(largest->first) * 0.05f;
+}
+
+float floorHeightUnder(const Scene& scene, const WalkableRegion& region) {
+  // Points inside the region, at most about 4096, each counted once per
+  // 5 cm height bin whose upward surfaces cover it.
+  glm::dvec2 lower, upper;
+  region.bounds(lower, upper);
+  const double step = std::max(0.25, std::sqrt(region.area() / 4096.0));
+  const int columns = int(std::ceil((upper.x - lower.x) / step)), rows = int(std::ceil((upper.y - lower.y) / step));
+  auto pointAt = [&](int x, int y) { return lower + step * glm::dvec2(x + 0.5, y + 0.5); };
+  std::vector<uint8_t> inside(size_t(columns) * size_t(rows));
+  for (int y = 0; y < rows; ++y) {
+    for (int x = 0; x < columns; ++x) inside[size_t(y) * size_t(columns) + size_t(x)] = region.contains(pointAt(x, y));
+  }
+  std::map<int, std::vector<uint8_t>> coveredByHeight;
+  for (const SceneMesh& mesh : scene.meshes) {
+    for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+      const SceneVertex &a = mesh.vertices[mesh.indices[i]], &b = mesh.vertices[mesh.indices[i + 1]],
+                        &c = mesh.vertices[mesh.indices[i + 2]];
+      const glm::vec3 normal = glm::cross(b.position - a.position, c.position - a.position);
+      const float length = glm::length(normal);
+      if (length <= 0.0f || std::abs(normal.z) < 0.95f * length) continue;  // not horizontal
+      // Facing from the shading normals, which importers keep consistent
+      // even where the winding is not.
+      if ((a.normal + b.normal + c.normal).z <= 0.0f) continue;
+      glm::dvec2 p0(a.position), p1(b.position), p2(c.position);
+      if (normal.z < 0.0f) std::swap(p1, p2);  // counter-clockwise seen from above
+      const glm::dvec2 low = glm::min(p0, glm::min(p1, p2)), high = glm::max(p0, glm::max(p1, p2));
+      const int x0 = std::max(0, int(std::floor((low.x - lower.x) / step - 0.5)));
+      const int x1 = std::min(columns - 1, int(std::ceil((high.x - lower.x) / step - 0.5)));
+      const int y0 = std::max(0, int(std::floor((low.y - lower.y) / step - 0.5)));
+      const int y1 = std::min(rows - 1, int(std::ceil((high.y - lower.y) / step - 0.5)));
+      if (x0 > x1 || y0 > y1) continue;
+      const int bin = int(std::lround((a.position.z + b.position.z + c.position.z) / 3.0f / 0.05f));
+      std::vector<uint8_t>& covered = coveredByHeight[bin];
+      covered.resize(inside.size());
+      for (int y = y0; y <= y1; ++y) {
+        for (int x = x0; x <= x1; ++x) {
+          const size_t cell = size_t(y) * size_t(columns) + size_t(x);
+          if (inside[cell] && distanceToTriangle(p0, p1, p2, pointAt(x, y)) == 0.0) covered[cell] = 1;
+        }
+      }
+    }
+  }
+  int bestBin = 0;
+  size_t bestCount = 0;
+  for (const auto& [bin, covered] : coveredByHeight) {  // ascending heights: ties keep the lower
+    const size_t count = size_t(std::count(covered.begin(), covered.end(), uint8_t(1)));
+    if (count > bestCount) bestCount = count, bestBin = bin;
+  }
+  return bestCount > 0 ? float(bestBin) * 0.05f : dominantFloorHeight(scene);
 }
 
 namespace {

@@ -41,7 +41,13 @@ struct WalkableRegionProposal {
 WalkableRegionProposal proposeWalkableRegion(const Scene& scene, const RegionSearchOptions& options,
                                              const std::string& subject);
 
-// The height of the largest upward-facing surface area (the main floor).
+// The height of the largest horizontal surface area (the main floor).
 float dominantFloorHeight(const Scene& scene);
+
+// The floor under a given region: the height whose upward-facing
+// horizontal surfaces cover the most of the region (ties: the lower). A
+// level's largest floor may lie elsewhere, or be a roof above the region.
+// The scene's dominant floor when nothing horizontal lies under it.
+float floorHeightUnder(const Scene& scene, const WalkableRegion& region);
 
 }  // namespace triwalk

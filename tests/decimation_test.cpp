@@ -281,6 +281,26 @@ TEST_CASE("point location walks to the containing triangle, and outside to the n
   CHECK(mesh.distanceToTriangle(outside, {7.0, 2.0}) == doctest::Approx(2.0));
 }
 
+TEST_CASE("outside every triangle, a position is served by the nearest triangle whose references see it") {
+  // Two rooms, x in [0, 4] and [4.25, 8.25], joined by a doorway at y in [1, 2].
+  const auto region = std::make_shared<const WalkableRegion>(
+      std::vector<RegionPolygon>{{{{0, 0}, {4, 0}, {4, 1}, {4.25, 1}, {4.25, 0}, {8.25, 0}, {8.25, 3}, {4.25, 3}, {4.25, 2},
+                                   {4, 2}, {4, 3}, {0, 3}},
+                                  {}}},
+      "two rooms");
+  const std::vector<glm::dvec2> positions{{0.5, 1.5}, {1.5, 1.5}, {0.5, 2.5}, {4.5, 0.2}, {5.5, 0.2}, {4.5, 1.2}};
+  const std::vector<Triangle> triangles{{0, 1, 2}, {3, 4, 5}};
+  const glm::dvec2 corner(3.8, 0.3);  // in the first room, 0.7 m from the second room's triangle, behind the wall
+  const ViewMesh withWalls(positions, triangles, region);
+  const ViewMesh withoutWalls(positions, triangles);
+  CHECK(withoutWalls.locate(corner) == 1);
+  CHECK(withWalls.servingRank(1, corner).blind);
+  CHECK(withWalls.locate(corner) == 0);
+  CHECK_FALSE(withWalls.servingRank(0, corner).blind);
+  // In the doorway both see it; the nearer serves.
+  CHECK(withWalls.locate({4.1, 1.5}) == 1);
+}
+
 TEST_CASE("collinear and too few samples are refused with a clear error") {
   const std::vector<glm::dvec2> line = {{0, 0}, {1, 1}, {2, 2}, {3, 3}};
   CHECK_THROWS_WITH_AS(ViewMesh::delaunay(line, {}, "manifest.json"),

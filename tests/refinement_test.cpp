@@ -1,6 +1,7 @@
 // The refinement after decimation: references move to nearby free samples
 // while that lowers the mean error over the dense samples, on tiny grids
-// with errors whose best answer is known, and on a captured data set.
+// with errors whose best answer is known, and on a captured data set. And
+// how both serve the samples outside the mesh: as eval and the viewer do.
 
 #include "core/geometry/view_mesh.h"
 #include "core/io/atomic_file.h"
@@ -173,6 +174,71 @@ TEST_CASE("sample counts along a log with relocations, and where a count is last
 
 // Decimation's own determinism is checked here too: the collapses come first
 // in the log compared.
+TEST_CASE("the default refinement radius reaches a sample's eight nearest neighbours, whatever the spacing") {
+  // A square lattice: the diagonal neighbours. A lattice of 0.31 x 0.75 m
+  // rows: the diagonals too, not just the two neighbours along a row (what
+  // an absolute 0.5 m gave), and a 1.46 m lattice gets 1.47 m, not nothing.
+  auto lattice = [](double dx, double dy) {
+    std::vector<glm::dvec2> points;
+    for (int x = 0; x < 20; ++x) {
+      for (int y = 0; y < 12; ++y) points.emplace_back(dx * x, dy * y);
+    }
+    return points;
+  };
+  CHECK(neighbourhoodRadius(lattice(1.0, 1.0)) == doctest::Approx(1.01 * std::sqrt(2.0)));
+  const double rows = neighbourhoodRadius(lattice(0.31, 0.75));
+  CHECK(rows >= std::hypot(0.31, 0.75));
+  CHECK(rows < 1.0);
+  CHECK(neighbourhoodRadius(lattice(1.46, 1.46)) == doctest::Approx(1.01 * 1.46 * std::sqrt(2.0)));
+}
+
+TEST_CASE("decimation serves samples outside the mesh as eval does: the nearest triangle that sees them") {
+  // Two 4 x 3 m rooms joined by a 1 m doorway, a grid of samples 0.5 m
+  // apart inside, each moved by a few millimetres so that no sample lies on
+  // an edge between two triangles (either may serve it, and eval and the
+  // decimator break that tie differently); a reference reconstructs a
+  // sample it cannot see badly.
+  const WalkableRegion region(
+      {{{{0, 0}, {4, 0}, {4, 1}, {4.5, 1}, {4.5, 0}, {8.5, 0}, {8.5, 3}, {4.5, 3}, {4.5, 2}, {4, 2}, {4, 3}, {0, 3}}, {}}},
+      "two rooms");
+  std::vector<glm::dvec2> positions;
+  for (double x = 0.25; x < 8.5; x += 0.5) {
+    for (double y = 0.25; y < 3.0; y += 0.5) {
+      const glm::dvec2 jitter(0.003 * std::sin(37.0 * x + 11.0 * y), 0.003 * std::cos(17.0 * x - 29.0 * y));
+      if (region.contains({x, y})) positions.push_back(glm::dvec2(x, y) + jitter);
+    }
+  }
+  const FormulaErrors::Formula formula = [&](const Triangle& t, int destination) {
+    double error = 0.0;
+    for (int v : t) {
+      const glm::dvec2 a = positions[size_t(v)], b = positions[size_t(destination)];
+      error += glm::length(a - b) + (region.lineOfSight(a, b) ? 0.0 : 10.0);
+    }
+    return error;
+  };
+  FormulaErrors errors(formula);
+  DecimationOptions options;
+  options.maxError = 0.0;
+  options.targetSamples = 8;
+  EdgeCollapseDecimator decimator(ViewMesh::delaunay(positions, {}, "two rooms", &region), DecimationErrors{nullptr, &errors},
+                                  options);
+  int blindNearest = 0;  // outside samples whose nearest triangle is behind a wall: the case under test
+  while (decimator.step()) {
+    const ViewMesh mesh = decimator.mesh();
+    CHECK(decimator.servedSampleMeanError() == doctest::Approx(meanError(mesh, formula)).epsilon(1e-12));
+    for (int i = 0; i < int(positions.size()); ++i) {
+      if (std::binary_search(mesh.vertices().begin(), mesh.vertices().end(), i)) continue;
+      int nearest = 0;
+      for (int t = 1; t < mesh.triangleCount(); ++t) {
+        if (mesh.distanceToTriangle(t, positions[size_t(i)]) < mesh.distanceToTriangle(nearest, positions[size_t(i)])) nearest = t;
+      }
+      blindNearest += mesh.servingRank(nearest, positions[size_t(i)]).blind;
+    }
+  }
+  CHECK(decimator.vertexCount() == 8);
+  CHECK(blindNearest > 0);
+}
+
 TEST_CASE(
     "a captured data set: decimation then refinement, the same with 1 and 2 threads, and through selection.json") {
   testing::TemporaryDirectory directory;

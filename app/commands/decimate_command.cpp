@@ -80,10 +80,10 @@ void registerDecimateCommand(CLI::App& app) {
                 run.collapses, run.collapseSeconds, run.costingSeconds, (unsigned long long)statistics.errorsComputed,
                 (unsigned long long)statistics.cacheHits, (unsigned long long)statistics.staleEntriesSkipped);
     const RefinementResult& refinement = run.refinement;
-    if (selection.refinement.radius > 0.0) {
+    if (refinement.radius > 0.0) {
       std::printf("refinement: %zu references moved in %d passes (radius %.2f m); mean error over the dense samples %.4f "
                   "-> %.4f; %.1f s, errors computed %llu, served from the cache %llu\n",
-                  refinement.moves.size(), refinement.passes, selection.refinement.radius, refinement.objectiveBefore,
+                  refinement.moves.size(), refinement.passes, refinement.radius, refinement.objectiveBefore,
                   refinement.objectiveAfter, run.refinementSeconds, (unsigned long long)refinement.errorsComputed,
                   (unsigned long long)refinement.cacheHits);
     }

@@ -69,7 +69,7 @@ void compareAtCounts(const Dataset& dataset, const Selection& selection, const s
   for (int count : counts) {
     const size_t steps = *lastStepWithSamples(initialCount, selection.collapses, count);
     const ViewMesh meshes[4] = {
-        ViewMesh(positions, replayForward(selection.initialTriangles, selection.collapses, steps)),
+        datasetTriangles(dataset, replayForward(selection.initialTriangles, selection.collapses, steps)),
         datasetMesh(dataset, uniformSelection(dataset, count), "uniform baseline"),
         datasetMesh(dataset, kMedoidsSelection(positions, count), "k-medoids baseline"),
         datasetMesh(dataset, randomSelection(dataset.sampleCount(), count, seed), "random baseline")};

@@ -48,8 +48,9 @@ void addSelectionOptions(CLI::App& command, SelectionArguments& arguments) {
                    "With --cost centroid: the paper's plain mean of the new triangles' errors (default: area-weighted)");
   command.add_option("--refine-radius", arguments.refineRadius,
                      "After decimation, move references up to this far (metres) at a time while that lowers the "
-                     "mean error over the dense samples; 0 disables")
-      ->capture_default_str()->check(nonNegativeNumber());
+                     "mean error over the dense samples; 0 disables (default: to any of the 8 nearest samples, "
+                     "1.01 x the median distance to the 8th nearest)")
+      ->check(nonNegativeNumber());
 }
 
 SelectionSettings selectionSettings(const SelectionArguments& arguments, double maxError, int targetSamples) {
@@ -74,7 +75,7 @@ nlohmann::json describeSelectionSettings(const SelectionSettings& settings, cons
           {"cost", collapseCostName(options.cost)},
           {"fixed_boundary", options.fixedBoundary},
           {"area_weighted_cost", options.areaWeightedCost},
-          {"refine_radius", settings.refinement.radius},
+          {"refine_radius", settings.refinement.radius ? nlohmann::json(*settings.refinement.radius) : nlohmann::json("auto")},
           {"error_width", errors.width},
           {"quality", describeErrorSettings(errors)}};
 }

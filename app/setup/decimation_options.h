@@ -26,7 +26,7 @@ struct SelectionArguments {
   std::string cost = "served-samples";
   bool fixedBoundary = false;
   bool unweightedCost = false;
-  double refineRadius = RefinementOptions{}.radius;
+  std::optional<double> refineRadius;  // none: neighbourhoodRadius
 };
 
 void addSelectionOptions(CLI::App& command, SelectionArguments& arguments);

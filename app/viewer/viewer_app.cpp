@@ -65,7 +65,7 @@ public:
     state_.dataset = &dataset_;
     state_.session = session_.get();
     state_.snapshot = session_->snapshot();
-    state_.mesh = ViewMesh(samplePositions(dataset_), state_.snapshot.triangles);
+    state_.mesh = datasetTriangles(dataset_, state_.snapshot.triangles);
     state_.warp.blend = options.synthesis.blend;
     state_.warp.holes = options.synthesis.holes;
     state_.grazingAngleDegrees = options.synthesis.warp.grazingAngleDegrees;
@@ -156,7 +156,7 @@ private:
       const bool meshChanged = snapshot.triangles != state_.snapshot.triangles;
       state_.snapshot = snapshot;
       if (meshChanged) {
-        state_.mesh = ViewMesh(samplePositions(dataset_), snapshot.triangles);
+        state_.mesh = datasetTriangles(dataset_, snapshot.triangles);
         renderer_->setMesh(state_.mesh);
         state_.selectedTriangle = -1;
         state_.inspection.reset();

@@ -63,9 +63,12 @@ double distanceToTriangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, glm::dvec2 p
   if (inside) return 0.0;
   double best = std::numeric_limits<double>::max();
   for (int e = 0; e < 3; ++e) {
-    const glm::dvec2 from = corners[e], edge = corners[(e + 1) % 3] - from;
-    const double along = std::clamp(glm::dot(point - from, edge) / glm::dot(edge, edge), 0.0, 1.0);
-    best = std::min(best, glm::length(point - (from + along * edge)));
+    // Past either end the distance is to the corner itself, computed the
+    // same way from every triangle that shares it (so ties stay exact).
+    const glm::dvec2 from = corners[e], to = corners[(e + 1) % 3], edge = to - from;
+    const double along = glm::dot(point - from, edge) / glm::dot(edge, edge);
+    const glm::dvec2 nearest = along <= 0.0 ? from : along >= 1.0 ? to : from + along * edge;
+    best = std::min(best, glm::length(point - nearest));
   }
   return best;
 }

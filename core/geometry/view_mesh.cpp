@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <tuple>
 
 namespace triwalk {
 
-ViewMesh::ViewMesh(std::vector<glm::dvec2> positions, std::vector<Triangle> triangles)
-    : positions_(std::move(positions)), triangles_(std::move(triangles)) {
+ViewMesh::ViewMesh(std::vector<glm::dvec2> positions, std::vector<Triangle> triangles,
+                   std::shared_ptr<const WalkableRegion> region)
+    : positions_(std::move(positions)), triangles_(std::move(triangles)), region_(std::move(region)) {
   trianglesOfSample_.resize(positions_.size());
   std::map<std::pair<int, int>, std::pair<int, int>> edges;  // directed edge -> (triangle, edge index)
   neighbours_.assign(triangles_.size(), {-1, -1, -1});
@@ -52,6 +54,10 @@ std::vector<Triangle> delaunayOf(const std::vector<glm::dvec2>& positions, std::
   return triangles;
 }
 
+std::shared_ptr<const WalkableRegion> shared(const WalkableRegion* region) {
+  return region && !region->empty() ? std::make_shared<const WalkableRegion>(*region) : nullptr;
+}
+
 void keepInside(std::vector<Triangle>& triangles, const std::vector<glm::dvec2>& positions, const WalkableRegion* region) {
   if (!region || region->empty()) return;
   std::erase_if(triangles, [&](const Triangle& t) {
@@ -69,7 +75,7 @@ ViewMesh ViewMesh::delaunay(std::vector<glm::dvec2> positions, std::span<const i
   if (triangles.empty()) throw InputError(subject, "the sample positions are collinear: they do not span an area to triangulate");
   keepInside(triangles, positions, region);
   if (triangles.empty()) throw InputError(subject, "no triangle of the samples lies inside the walkable region");
-  return ViewMesh(std::move(positions), std::move(triangles));
+  return ViewMesh(std::move(positions), std::move(triangles), shared(region));
 }
 
 std::optional<ViewMesh> ViewMesh::tryDelaunay(std::vector<glm::dvec2> positions, std::span<const int> samples,
@@ -77,7 +83,7 @@ std::optional<ViewMesh> ViewMesh::tryDelaunay(std::vector<glm::dvec2> positions,
   std::vector<Triangle> triangles = delaunayOf(positions, samples);
   keepInside(triangles, positions, region);
   if (triangles.empty()) return std::nullopt;
-  return ViewMesh(std::move(positions), std::move(triangles));
+  return ViewMesh(std::move(positions), std::move(triangles), shared(region));
 }
 
 glm::dvec2 ViewMesh::centroid(int triangle) const {
@@ -148,13 +154,26 @@ int ViewMesh::locate(glm::dvec2 point, int hint) const {
   for (int t = 0; t < triangleCount(); ++t) {
     if (contains(t, point)) return t;
   }
-  int nearest = 0;
-  double nearestDistance = std::numeric_limits<double>::max();
+  // Outside: in (distance, vertices) order, the first triangle whose
+  // references see the point has the best rank (any seeing triangle beats
+  // every blind one).
+  std::vector<std::tuple<double, Triangle, int>> byDistance;
   for (int t = 0; t < triangleCount(); ++t) {
-    const double d = distanceToTriangle(t, point);
-    if (d < nearestDistance) nearestDistance = d, nearest = t;
+    byDistance.emplace_back(distanceToTriangle(t, point), sortedTriangle(triangles_[size_t(t)]), t);
   }
-  return nearest;
+  std::sort(byDistance.begin(), byDistance.end());
+  for (const auto& [distance, vertices, t] : byDistance) {
+    if (!servingRank(t, point).blind) return t;
+  }
+  return std::get<2>(byDistance.front());
+}
+
+ServingRank ViewMesh::servingRank(int triangle, glm::dvec2 point) const {
+  const Triangle& t = triangles_[size_t(triangle)];
+  const double distance = distanceToTriangle(triangle, point);
+  if (distance == 0.0 || !region_) return {false, distance, sortedTriangle(t)};
+  const bool sees = std::all_of(t.begin(), t.end(), [&](int v) { return region_->lineOfSight(position(v), point); });
+  return {!sees, distance, sortedTriangle(t)};
 }
 
 }  // namespace triwalk

@@ -10,6 +10,8 @@
 
 #include <glm/glm.hpp>
 
+#include <compare>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -17,12 +19,26 @@
 
 namespace triwalk {
 
+// How well a triangle serves a position outside every triangle: first
+// whether its three references see the position (line of sight inside the
+// walkable region), then how near it is, then (ties, such as a corner two
+// triangles share) the lower sorted vertex triple. Inside a triangle the
+// distance is 0 and the position is never blind.
+struct ServingRank {
+  bool blind = false;
+  double distance = 0.0;
+  Triangle vertices{};  // sorted
+  auto operator<=>(const ServingRank&) const = default;
+};
+
 class ViewMesh {
 public:
   ViewMesh() = default;
   // positions: (x, y) of every sample of the data set by index;
-  // triangles: counter-clockwise sample indices.
-  ViewMesh(std::vector<glm::dvec2> positions, std::vector<Triangle> triangles);
+  // triangles: counter-clockwise sample indices; region: the walkable
+  // region, for locating positions outside every triangle (none: nearest).
+  ViewMesh(std::vector<glm::dvec2> positions, std::vector<Triangle> triangles,
+           std::shared_ptr<const WalkableRegion> region = nullptr);
 
   // The Delaunay triangulation of the given samples (all when empty).
   // With a region, only its triangles that lie inside the region are
@@ -53,10 +69,15 @@ public:
   // Triangles that use a sample, in index order.
   std::vector<int> trianglesAround(int sample) const;
 
+  const std::shared_ptr<const WalkableRegion>& region() const { return region_; }
+
   bool contains(int triangle, glm::dvec2 point) const;
   // The triangle containing point, walking from hint (any triangle or -1).
-  // Outside the covered area: the nearest triangle. -1 only if empty.
+  // Outside the covered area: the best ServingRank (the nearest triangle
+  // whose references see the point, else the nearest), ties to the lower
+  // id. -1 only if empty.
   int locate(glm::dvec2 point, int hint = -1) const;
+  ServingRank servingRank(int triangle, glm::dvec2 point) const;
   // Distance from point to a triangle (0 inside).
   double distanceToTriangle(int triangle, glm::dvec2 point) const;
 
@@ -66,6 +87,7 @@ private:
   std::vector<std::array<int, 3>> neighbours_;
   std::vector<int> vertices_;
   std::vector<std::vector<int>> trianglesOfSample_;
+  std::shared_ptr<const WalkableRegion> region_;
 };
 
 }  // namespace triwalk

@@ -47,6 +47,15 @@ bool insideRing(const Ring& ring, glm::dvec2 p, bool& onBoundary) {
   return inside;
 }
 
+bool convexRegion(const std::vector<RegionPolygon>& polygons) {
+  if (polygons.size() != 1 || !polygons[0].holes.empty()) return false;
+  const Ring& ring = polygons[0].outer;  // counter-clockwise
+  for (size_t i = 0; i < ring.size(); ++i) {
+    if (orientation(ring[i], ring[(i + 1) % ring.size()], ring[(i + 2) % ring.size()]) < 0) return false;
+  }
+  return true;
+}
+
 std::vector<const Ring*> ringsOf(const std::vector<RegionPolygon>& polygons) {
   std::vector<const Ring*> rings;
   for (const RegionPolygon& polygon : polygons) {
@@ -104,6 +113,7 @@ WalkableRegion::WalkableRegion(std::vector<RegionPolygon> polygons, const std::s
       }
     }
   }
+  convex_ = convexRegion(polygons_);
 }
 
 WalkableRegion WalkableRegion::rectangle(glm::dvec2 lower, glm::dvec2 upper) {
@@ -149,6 +159,10 @@ bool WalkableRegion::containsSegment(glm::dvec2 a, glm::dvec2 b) const {
     if (cuts[k + 1] > cuts[k] && !contains(a + (0.5 * (cuts[k] + cuts[k + 1])) * direction)) return false;
   }
   return true;
+}
+
+bool WalkableRegion::lineOfSight(glm::dvec2 a, glm::dvec2 b) const {
+  return convex_ || containsSegment(a, b);
 }
 
 bool WalkableRegion::containsTriangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) const {

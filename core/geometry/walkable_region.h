@@ -43,6 +43,13 @@ public:
   // Whether the closed triangle lies in the region: its edges do, and no
   // boundary point (a pillar's hole) lies strictly inside it.
   bool containsTriangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) const;
+  // Whether a person standing at a sees b at eye height: the segment
+  // between them stays in the region (a wall, a pillar or the space
+  // outside the region blocks it). In one convex room, or with no region,
+  // everything sees everything, positions on or just past its edge too.
+  bool lineOfSight(glm::dvec2 a, glm::dvec2 b) const;
+  // One polygon without holes whose outer ring is convex.
+  bool convex() const { return convex_; }
   double area() const;
   void bounds(glm::dvec2& lower, glm::dvec2& upper) const;
 
@@ -52,6 +59,7 @@ public:
 
 private:
   std::vector<RegionPolygon> polygons_;
+  bool convex_ = true;
 };
 
 // Each sample's share of the region: the area of the part of it nearer to

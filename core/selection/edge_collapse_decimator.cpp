@@ -59,7 +59,8 @@ const char* stopReasonName(StopReason reason) {
 EdgeCollapseDecimator::EdgeCollapseDecimator(const ViewMesh& mesh, DecimationErrors errors, DecimationOptions options,
                                              ProgressReporter* costing)
     : positions_(mesh.positions()), triangles_(mesh.triangles()), alive_(mesh.triangles().size(), 1),
-      incident_(mesh.positions().size()), isVertex_(mesh.positions().size(), 0), errors_(errors), options_(options) {
+      incident_(mesh.positions().size()), isVertex_(mesh.positions().size(), 0), errors_(errors), options_(options),
+      region_(mesh.region()) {
   TRIWALK_CHECK(options.cost == CollapseCost::Centroid ? errors.triangles != nullptr : errors.samples != nullptr,
                 "the decimator needs the error source of its cost");
   TRIWALK_CHECK(options.sampleWeights.empty() || options.sampleWeights.size() == mesh.positions().size(),
@@ -69,6 +70,7 @@ EdgeCollapseDecimator::EdgeCollapseDecimator(const ViewMesh& mesh, DecimationErr
   }
   for (int v : mesh.vertices()) isVertex_[size_t(v)] = 1;
   vertexCount_ = mesh.vertexCount();
+  if (region_ && !region_->convex()) sight_.assign(positions_.size() * positions_.size(), -1);
   if (options_.cost == CollapseCost::ServedSamples) serveInitialSamples(mesh, costing);
   std::set<Edge> edges;
   for (const Triangle& t : triangles_) {
@@ -88,7 +90,7 @@ ViewMesh EdgeCollapseDecimator::mesh() const {
     if (alive_[t]) triangles.push_back(canonicalTriangle(triangles_[t]));
   }
   std::sort(triangles.begin(), triangles.end());
-  return ViewMesh(positions_, std::move(triangles));
+  return ViewMesh(positions_, std::move(triangles), region_);
 }
 
 // ------------------------------------------------------------ topology --
@@ -278,12 +280,12 @@ bool EdgeCollapseDecimator::keepsEveryVertex(int a, int b, const Plan& plan) con
 
 // The samples the changed triangles will serve, and where each goes.
 // Every sample is served by the triangle around it, or, outside the mesh
-// (where the boundary shrank), by the nearest triangle, as eval and the
-// viewer serve a position. Those are: the samples the removed triangles
-// served, the freed vertices (not the placement, which becomes a
-// reference), and samples outside the mesh that a new triangle is now
-// nearest to. Ties go to the first triangle in the (sorted) new ones,
-// then to the lowest existing triangle id.
+// (where the boundary shrank), by the best-ranked triangle (the nearest
+// whose references see it, else the nearest), as eval and the viewer serve
+// a position. Those are: the samples the removed triangles served, the
+// freed vertices (not the placement, which becomes a reference), and
+// samples outside the mesh that a new triangle now serves better (ties
+// broken by the rank's vertex triple, as eval does).
 void EdgeCollapseDecimator::assignServedSamples(int a, int b, Plan& plan) const {
   plan.served.clear();
   plan.servedBy.clear();
@@ -291,40 +293,37 @@ void EdgeCollapseDecimator::assignServedSamples(int a, int b, Plan& plan) const 
   for (int freed : {a, b}) {
     if (freed != plan.placement) plan.served.push_back(freed);
   }
-  auto nearestAdded = [&](glm::dvec2 point, double& distance) {
+  auto bestAdded = [&](int sample, ServingRank& rank) {
     int home = -1;
-    distance = kInfinity;
-    for (size_t k = 0; k < plan.added.size() && distance > 0.0; ++k) {
-      const Triangle& t = plan.added[k];
-      const double d = distanceToTriangle(positions_, t, point);
-      if (d < distance) distance = d, home = int(k);
+    rank = {true, kInfinity, {}};
+    for (size_t k = 0; k < plan.added.size() && rank.distance > 0.0; ++k) {
+      const ServingRank r = servingRank(plan.added[k], sample);
+      if (r < rank) rank = r, home = int(k);
     }
     return home;
   };
   for (int sample : outside_) {
     if (std::binary_search(plan.removed.begin(), plan.removed.end(), home_[size_t(sample)])) continue;  // listed above
-    double distance;
-    nearestAdded(positions_[size_t(sample)], distance);
-    if (distance < homeDistance_[size_t(sample)]) plan.served.push_back(sample);
+    ServingRank rank;
+    bestAdded(sample, rank);
+    if (rank < homeRank_[size_t(sample)]) plan.served.push_back(sample);
   }
   plan.served.erase(std::remove(plan.served.begin(), plan.served.end(), plan.placement), plan.served.end());
   std::sort(plan.served.begin(), plan.served.end());
-  plan.servedDistance.clear();
+  plan.servedRank.clear();
   for (int sample : plan.served) {
-    const glm::dvec2 point = positions_[size_t(sample)];
-    double distance;
-    int home = nearestAdded(point, distance);
-    if (distance > 0.0) {
-      // Outside the new triangles: an existing triangle may be nearer.
+    ServingRank rank;
+    int home = bestAdded(sample, rank);
+    if (rank.distance > 0.0) {
+      // Outside the new triangles: an existing triangle may serve it better.
       for (int t = 0; t < int(triangles_.size()); ++t) {
         if (!alive_[size_t(t)] || std::binary_search(plan.removed.begin(), plan.removed.end(), t)) continue;
-        const Triangle& tri = triangles_[size_t(t)];
-        const double d = distanceToTriangle(positions_, tri, point);
-        if (d < distance) distance = d, home = -1 - t;
+        const ServingRank r = servingRank(triangles_[size_t(t)], sample);
+        if (r < rank) rank = r, home = -1 - t;
       }
     }
     plan.servedBy.push_back(home);
-    plan.servedDistance.push_back(distance);
+    plan.servedRank.push_back(rank);
   }
 }
 
@@ -413,11 +412,11 @@ double EdgeCollapseDecimator::sampleError(const Triangle& triangle, int sample) 
 }
 
 // Every sample that is not a vertex is served by the triangle around it
-// (the nearest outside the mesh, when the mesh is not the dense one).
+// (outside the mesh, when it is not the dense one, the best-ranked one).
 void EdgeCollapseDecimator::serveInitialSamples(const ViewMesh& mesh, ProgressReporter* progress) {
   home_.assign(positions_.size(), -1);
   homeError_.assign(positions_.size(), 0.0);
-  homeDistance_.assign(positions_.size(), 0.0);
+  homeRank_.assign(positions_.size(), ServingRank{});
   served_.assign(triangles_.size(), {});
   std::vector<SampleReconstruction> requests;
   int hint = -1;
@@ -425,8 +424,8 @@ void EdgeCollapseDecimator::serveInitialSamples(const ViewMesh& mesh, ProgressRe
     if (isVertex_[size_t(s)]) continue;
     hint = mesh.locate(positions_[size_t(s)], hint);
     home_[size_t(s)] = hint;
-    homeDistance_[size_t(s)] = mesh.distanceToTriangle(hint, positions_[size_t(s)]);
-    if (homeDistance_[size_t(s)] > 0.0) outside_.insert(s);
+    homeRank_[size_t(s)] = servingRank(triangles_[size_t(hint)], s);
+    if (homeRank_[size_t(s)].distance > 0.0) outside_.insert(s);
     served_[size_t(hint)].push_back(s);
     requests.push_back({sortedTriangle(triangles_[size_t(hint)]), s});
   }
@@ -473,6 +472,20 @@ double EdgeCollapseDecimator::triangleError(const Triangle& triangle) {
 const Triangle& EdgeCollapseDecimator::servingTriangle(const Plan& plan, size_t i) const {
   const int by = plan.servedBy[i];
   return by >= 0 ? plan.added[size_t(by)] : triangles_[size_t(-1 - by)];
+}
+
+// As ViewMesh::locate ranks triangles, from the samples' own positions.
+ServingRank EdgeCollapseDecimator::servingRank(const Triangle& triangle, int sample) const {
+  const double distance = distanceToTriangle(positions_, triangle, positions_[size_t(sample)]);
+  if (distance == 0.0 || sight_.empty()) return {false, distance, sortedTriangle(triangle)};
+  const bool sees = std::all_of(triangle.begin(), triangle.end(), [&](int v) { return seesEachOther(v, sample); });
+  return {!sees, distance, sortedTriangle(triangle)};
+}
+
+bool EdgeCollapseDecimator::seesEachOther(int reference, int sample) const {
+  int8_t& known = sight_[size_t(reference) * positions_.size() + size_t(sample)];
+  if (known < 0) known = region_->lineOfSight(positions_[size_t(reference)], positions_[size_t(sample)]);
+  return known != 0;
 }
 
 bool EdgeCollapseDecimator::boundaryMayShrink() const {
@@ -692,10 +705,10 @@ void EdgeCollapseDecimator::apply(const Edge& edge, const EdgeState& state) {
       const int home = plan.servedBy[i] >= 0 ? firstAdded + plan.servedBy[i] : -1 - plan.servedBy[i];
       home_[size_t(sample)] = home;
       homeError_[size_t(sample)] = sampleError(sortedTriangle(servingTriangle(plan, i)), sample);
-      homeDistance_[size_t(sample)] = plan.servedDistance[i];
+      homeRank_[size_t(sample)] = plan.servedRank[i];
       served_[size_t(home)].push_back(sample);
       if (home < firstAdded) gainedSamples.insert(home);
-      if (plan.servedDistance[i] > 0.0) {
+      if (plan.servedRank[i].distance > 0.0) {
         outside_.insert(sample);
       } else {
         outside_.erase(sample);

@@ -166,7 +166,7 @@ private:
     std::vector<Triangle> added;
     std::vector<int> served;          // served-sample cost: the samples whose triangle changes
     std::vector<int> servedBy;        // per served sample: index into added, or -1 - id of an existing triangle
-    std::vector<double> servedDistance;  // from the sample to that triangle (0 inside)
+    std::vector<ServingRank> servedRank;  // of that triangle for the sample ({false, 0} inside)
   };
   struct EdgeState {
     uint64_t stamp = 0;
@@ -208,6 +208,8 @@ private:
   bool staysInside(const Plan& plan) const;
   bool keepsEveryVertex(int a, int b, const Plan& plan) const;
   const Triangle& servingTriangle(const Plan& plan, size_t i) const;
+  ServingRank servingRank(const Triangle& triangle, int sample) const;
+  bool seesEachOther(int a, int b) const;
   double weightOf(int sample) const;
   std::vector<std::pair<int, PlacementKind>> candidates(int a, int b, EdgeState& state) const;
   void assignServedSamples(int a, int b, Plan& plan) const;
@@ -235,8 +237,12 @@ private:
   // references), its error from there, and each triangle's samples.
   std::vector<int> home_;
   std::vector<double> homeError_;
-  std::vector<double> homeDistance_;  // 0 inside the home triangle
-  std::set<int> outside_;             // samples outside the mesh (where its boundary shrank)
+  std::vector<ServingRank> homeRank_;  // {false, 0} inside the home triangle
+  std::set<int> outside_;              // samples outside the mesh (where its boundary shrank)
+  // The walkable region, and which samples see each other in it (filled
+  // as asked: -1 unknown, 0 no, 1 yes; empty for a convex region).
+  std::shared_ptr<const WalkableRegion> region_;
+  mutable std::vector<int8_t> sight_;
   std::vector<std::vector<int>> served_;
   std::unordered_map<SampleKey, double, SampleKeyHash> sampleCache_;
   std::map<Edge, EdgeState> edges_;

@@ -56,7 +56,7 @@ SelectionRun selectReferences(const Dataset& dataset, DatasetTriangleErrors& err
   run.statistics = decimator.statistics();
   run.collapses = decimator.log().size();
 
-  ProgressReporter refining("refine: move references", 0, quiet || settings.refinement.radius <= 0.0);
+  ProgressReporter refining("refine: move references", 0, quiet || settings.refinement.radius == 0.0);
   run.refinement = refineSelection(initial.positions(), decimator.mesh().triangles(), sampleErrors, settings.refinement,
                                    &refining);
   refining.finish();

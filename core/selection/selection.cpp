@@ -168,7 +168,12 @@ Selection readSelection(const std::filesystem::path& path, const Dataset& datase
 }
 
 ViewMesh selectionMesh(const Selection& selection, const Dataset& dataset) {
-  return ViewMesh(samplePositions(dataset), selection.triangles);
+  return datasetTriangles(dataset, selection.triangles);
+}
+
+ViewMesh datasetTriangles(const Dataset& dataset, std::vector<Triangle> triangles) {
+  return ViewMesh(samplePositions(dataset), std::move(triangles),
+                  std::make_shared<const WalkableRegion>(dataset.walkableRegion()));
 }
 
 }  // namespace triwalk

@@ -57,6 +57,10 @@ Selection readSelection(const std::filesystem::path& path, const Dataset& datase
 // The selection's triangles as a mesh over the data set's positions.
 ViewMesh selectionMesh(const Selection& selection, const Dataset& dataset);
 
+// Triangles as a mesh over the data set's positions and walkable region
+// (which serves positions outside every triangle, see ViewMesh::locate).
+ViewMesh datasetTriangles(const Dataset& dataset, std::vector<Triangle> triangles);
+
 // (x, y) of every sample, by index.
 std::vector<glm::dvec2> samplePositions(const Dataset& dataset);
 

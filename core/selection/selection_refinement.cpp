@@ -4,7 +4,10 @@
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <memory>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -96,20 +99,41 @@ std::vector<int> neighboursOf(const ViewMesh& mesh, int sample) {
 
 }  // namespace
 
+double neighbourhoodRadius(std::span<const glm::dvec2> positions) {
+  constexpr size_t kNeighbours = 8;
+  std::vector<double> eighth(positions.size(), 0.0);
+  tbb::parallel_for(size_t(0), positions.size(), [&](size_t i) {
+    std::vector<double> distances;
+    for (size_t j = 0; j < positions.size(); ++j) {
+      if (j != i) distances.push_back(glm::length(positions[j] - positions[i]));
+    }
+    if (distances.empty()) return;
+    const size_t k = std::min(kNeighbours, distances.size()) - 1;
+    std::nth_element(distances.begin(), distances.begin() + std::ptrdiff_t(k), distances.end());
+    eighth[i] = distances[k];
+  });
+  if (eighth.empty()) return 0.0;
+  std::nth_element(eighth.begin(), eighth.begin() + std::ptrdiff_t(eighth.size() / 2), eighth.end());
+  return 1.01 * eighth[eighth.size() / 2];
+}
+
 RefinementResult refineSelection(std::span<const glm::dvec2> positions, const std::vector<Triangle>& current,
                                  ReconstructionErrorSource& errors, const RefinementOptions& options,
                                  ProgressReporter* progress) {
   RefinementResult result;
+  result.radius = options.radius.value_or(neighbourhoodRadius(positions));
   ObjectiveEvaluator evaluator(positions, options.sampleWeights, options.region, errors, result);
   TRIWALK_CHECK(!current.empty(), "refining a selection needs its triangles");
-  ViewMesh mesh(std::vector<glm::dvec2>(positions.begin(), positions.end()), current);
+  ViewMesh mesh(std::vector<glm::dvec2>(positions.begin(), positions.end()), current,
+                options.region && !options.region->empty() ? std::make_shared<const WalkableRegion>(*options.region)
+                                                           : nullptr);
   std::vector<int> references = mesh.vertices();  // sorted
   std::vector<SampleReconstruction> assignment = evaluator.assignments(mesh);
   evaluator.compute({assignment});
   double objective = evaluator.mean(assignment);
   result.objectiveBefore = objective;
   result.triangles = mesh.triangles();
-  if (options.radius <= 0.0) {
+  if (result.radius <= 0.0) {
     result.objectiveAfter = objective;
     return result;
   }
@@ -130,7 +154,7 @@ RefinementResult refineSelection(std::span<const glm::dvec2> positions, const st
       std::vector<std::vector<SampleReconstruction>> assignments;
       for (int c = 0; c < int(positions.size()); ++c) {
         if (std::binary_search(references.begin(), references.end(), c)) continue;
-        if (glm::length(positions[size_t(c)] - positions[size_t(moving)]) > options.radius) continue;
+        if (glm::length(positions[size_t(c)] - positions[size_t(moving)]) > result.radius) continue;
         std::vector<int> moved = references;
         moved[size_t(at - references.begin())] = c;
         std::sort(moved.begin(), moved.end());

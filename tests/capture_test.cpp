@@ -239,4 +239,54 @@ TEST_CASE("capture writes a complete data set that opens, and refuses to overwri
   CHECK(std::filesystem::exists(directory / "other/notes.txt"));
 }
 
+TEST_CASE("door leaves are open in captures unless asked closed, and the manifest says which") {
+  testing::TemporaryDirectory directory;
+  auto context = createHeadlessContext();
+  // The box with a door leaf across it at x = 2; the samples stand before it.
+  Scene scene = boxRoom();
+  SceneMaterial door;
+  door.baseColor = glm::vec3(0.5f);
+  door.passable = true;
+  scene.materials.push_back(door);
+  MeshBuilder builder(int(scene.materials.size()) - 1, 1.0f);
+  builder.addQuad({2.0f, 0.0f, 0.0f}, {0.0f, 3.0f, 0.0f}, {0.0f, 0.0f, 2.5f}, 0.5f);
+  scene.meshes.push_back(builder.take());
+  CaptureOptions options;
+  options.area = glm::vec4(0.5f, 0.5f, 1.5f, 2.5f);
+  options.paths = 2;
+  options.perPath = 2;
+  options.width = 64;
+  options.probes = 0;
+  options.quiet = true;
+  // The farthest surface seen towards +x: the far wall (x = 4) through an
+  // open door, the leaf (x = 2) when it is closed.
+  auto farthestAhead = [](const Dataset& dataset) {
+    float farthest = 0.0f;
+    for (int i = 0; i < dataset.sampleCount(); ++i) {
+      const Panorama panorama = dataset.loadView(dataset.sample(i));
+      const EquirectProjection projection = dataset.projection(dataset.sample(i));
+      for (int v = 0; v < panorama.height(); ++v) {
+        for (int u = 0; u < panorama.width(); ++u) {
+          const glm::vec3 direction = projection.pixelDirection(u, v);
+          if (direction.x > 0.95f) farthest = std::max(farthest, direction.x * panorama.distance.at(u, v));
+        }
+      }
+    }
+    return farthest;
+  };
+  captureDataset(scene, "box with a door", options, directory / "open");
+  const Dataset open = Dataset::open(directory / "open");
+  CHECK(open.manifest().capture.at("doors") == "open");
+  CHECK(farthestAhead(open) == doctest::Approx(4.0f - 0.5f).epsilon(0.02));
+  options.closedDoors = true;
+  captureDataset(scene, "box with a door", options, directory / "closed");
+  const Dataset closed = Dataset::open(directory / "closed");
+  CHECK(closed.manifest().capture.at("doors") == "closed");
+  CHECK(farthestAhead(closed) == doctest::Approx(2.0f - 0.5f).epsilon(0.02));
+  // A scene without doors does not mention them.
+  options.closedDoors = false;
+  captureDataset(boxRoom(), "box", options, directory / "box");
+  CHECK_FALSE(Dataset::open(directory / "box").manifest().capture.contains("doors"));
+}
+
 }  // namespace triwalk

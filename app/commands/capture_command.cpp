@@ -52,6 +52,9 @@ void registerCaptureCommand(CLI::App& app) {
   command->add_option("--probes", arguments->options.probes, "Held-out views at random positions")
       ->capture_default_str();
   command->add_option("--seed", arguments->options.seed, "Seed of the probe positions")->capture_default_str();
+  command->add_flag("--closed-doors", arguments->options.closedDoors,
+                    "Draw door leaves (IFC door elements) in the captures (default: doors open, as the walkable "
+                    "region passes through them)");
   command->add_flag("--auto-area", arguments->autoArea,
                     "Find the walkable region by a flood fill of probes (default for imported scenes without --area "
                     "or --region)");

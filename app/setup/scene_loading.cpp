@@ -34,7 +34,7 @@ LoadedScene loadSceneForCapture(const std::string& spec, const SceneImportArgume
   std::printf("imported %s: %zu triangles, %zu materials, %d textures", spec.c_str(), loaded.scene.triangleCount(),
               loaded.scene.materials.size(), report.texturesLoaded);
   if (!report.map.empty()) std::printf(", map %s, %zu spawn points", report.map.c_str(), report.spawnPoints.size());
-  if (report.doorMeshes > 0) std::printf(", %d meshes of door elements (passable for the walkable region)", report.doorMeshes);
+  if (report.doorMeshes > 0) std::printf(", %d meshes of door elements (passable for the walkable region, open in captures)", report.doorMeshes);
   std::printf("\n");
   if (!report.missingTextures.empty()) {
     std::fprintf(stderr, "triwalk: warning: %zu textures not found (drawn in a neutral color), e.g. %s\n",

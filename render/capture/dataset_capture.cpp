@@ -164,8 +164,11 @@ CapturePlan planCapture(const Scene& scene, const CaptureOptions& options) {
   return plan;
 }
 
-CaptureSummary captureDataset(const Scene& scene, const std::string& sceneName, const CaptureOptions& options,
+CaptureSummary captureDataset(const Scene& sceneWithDoors, const std::string& sceneName, const CaptureOptions& options,
                               const std::filesystem::path& outDirectory) {
+  const bool hasDoors = sceneWithDoors.passableMeshCount() > 0;
+  std::optional<Scene> doorsOpen;
+  const Scene& scene = hasDoors && !options.closedDoors ? doorsOpen.emplace(withDoorsOpen(sceneWithDoors)) : sceneWithDoors;
   const CapturePlan plan = planCapture(scene, options);
   if (std::filesystem::exists(outDirectory) && !std::filesystem::is_empty(outDirectory) &&
       !std::filesystem::exists(outDirectory / kManifestFileName)) {
@@ -225,6 +228,7 @@ CaptureSummary captureDataset(const Scene& scene, const std::string& sceneName, 
                         {"eye_z", plan.eyeZ},
                         {"face_size", options.faceSize > 0 ? options.faceSize : defaultCubeFaceSize(options.width)},
                         {"probe_seed", options.seed}};
+    if (hasDoors) manifest.capture["doors"] = options.closedDoors ? "closed" : "open";
     writeManifest(staging, manifest);
     moveIntoPlace(staging, outDirectory);
   } catch (...) {

@@ -28,6 +28,10 @@ struct CaptureOptions {
   int faceSize = 0;          // cube face resolution, 0 = defaultCubeFaceSize(width)
   int probes = 20;
   unsigned seed = 1;
+  // Draw door leaves (passable meshes). Default: open doors, since the
+  // walkable region passes through them; a walker standing in a doorway
+  // would otherwise see nothing but the leaf.
+  bool closedDoors = false;
   bool quiet = false;
 };
 

@@ -178,8 +178,7 @@ WalkableRegionProposal proposeWalkableRegion(const Scene& scene, const RegionSea
 
   // The probes see the scene without its door leaves: a closed door joins
   // two rooms as an open one would.
-  Scene solid = scene;
-  std::erase_if(solid.meshes, [&](const SceneMesh& mesh) { return scene.materials[size_t(mesh.material)].passable; });
+  const Scene solid = withDoorsOpen(scene);
   InterruptScope interruptScope;
   ProgressReporter progress("find walkable region: cells probed", 0, options.quiet);
   CellProber prober(solid, grid, floors, options.eyeHeight, progress);

@@ -1,5 +1,6 @@
 #include "render/scene/scene.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace triwalk {
@@ -14,6 +15,16 @@ size_t Scene::vertexCount() const {
   size_t count = 0;
   for (const SceneMesh& mesh : meshes) count += mesh.vertices.size();
   return count;
+}
+
+size_t Scene::passableMeshCount() const {
+  return size_t(std::count_if(meshes.begin(), meshes.end(),
+                              [&](const SceneMesh& mesh) { return materials[size_t(mesh.material)].passable; }));
+}
+
+Scene withDoorsOpen(Scene scene) {
+  std::erase_if(scene.meshes, [&](const SceneMesh& mesh) { return scene.materials[size_t(mesh.material)].passable; });
+  return scene;
 }
 
 void Scene::bounds(glm::vec3& lower, glm::vec3& upper) const {

@@ -83,8 +83,13 @@ struct Scene {
 
   size_t triangleCount() const;
   size_t vertexCount() const;
+  size_t passableMeshCount() const;
   // Axis-aligned bounds of all vertices, metres.
   void bounds(glm::vec3& lower, glm::vec3& upper) const;
 };
+
+// The scene with its doors open, as a walker passes them: without the
+// passable meshes (door leaves).
+Scene withDoorsOpen(Scene scene);
 
 }  // namespace triwalk

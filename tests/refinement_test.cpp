@@ -190,6 +190,12 @@ TEST_CASE("the default refinement radius reaches a sample's eight nearest neighb
   CHECK(rows >= std::hypot(0.31, 0.75));
   CHECK(rows < 1.0);
   CHECK(neighbourhoodRadius(lattice(1.46, 1.46)) == doctest::Approx(1.01 * 1.46 * std::sqrt(2.0)));
+  // Corridors: two lattice rooms joined by a one-sample-wide line, most of
+  // whose samples have their 8th nearest two steps away; the rooms' inner
+  // samples still set the radius.
+  std::vector<glm::dvec2> corridors = lattice(1.0, 1.0);
+  for (int k = 1; k <= 400; ++k) corridors.emplace_back(19.0 + k, 5.0);
+  CHECK(neighbourhoodRadius(corridors) == doctest::Approx(1.01 * std::sqrt(2.0)));
 }
 
 TEST_CASE("decimation serves samples outside the mesh as eval does: the nearest triangle that sees them") {

@@ -49,7 +49,7 @@ void addSelectionOptions(CLI::App& command, SelectionArguments& arguments) {
   command.add_option("--refine-radius", arguments.refineRadius,
                      "After decimation, move references up to this far (metres) at a time while that lowers the "
                      "mean error over the dense samples; 0 disables (default: to any of the 8 nearest samples, "
-                     "1.01 x the median distance to the 8th nearest)")
+                     "1.01 x the lower quartile of the distance to the 8th nearest)")
       ->check(nonNegativeNumber());
 }
 

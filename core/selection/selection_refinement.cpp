@@ -113,8 +113,9 @@ double neighbourhoodRadius(std::span<const glm::dvec2> positions) {
     eighth[i] = distances[k];
   });
   if (eighth.empty()) return 0.0;
-  std::nth_element(eighth.begin(), eighth.begin() + std::ptrdiff_t(eighth.size() / 2), eighth.end());
-  return 1.01 * eighth[eighth.size() / 2];
+  const size_t quartile = eighth.size() / 4;
+  std::nth_element(eighth.begin(), eighth.begin() + std::ptrdiff_t(quartile), eighth.end());
+  return 1.01 * eighth[quartile];
 }
 
 RefinementResult refineSelection(std::span<const glm::dvec2> positions, const std::vector<Triangle>& current,

@@ -64,8 +64,10 @@ struct RefinementResult {
 };
 
 // How far a reference moves per step by default: to any of its eight
-// nearest samples, i.e. 1.01 x the median over samples of the distance to
-// their 8th nearest (on a square lattice, the diagonal neighbours). An
+// nearest samples, i.e. 1.01 x the lower quartile over samples of the
+// distance to their 8th nearest (on a square lattice, the diagonal
+// neighbours; the quartile, so that the samples with neighbours all round
+// set it, even in a region of corridors where most lie on an edge). An
 // absolute radius would mean a different neighbourhood on every capture:
 // 0.5 m reached the diagonals of the built-in scene's 0.35 m lattice, only
 // two samples on a 0.31 x 0.54 m one, and none on a 1.46 m one.

@@ -16,6 +16,7 @@ uniform vec3 cameraPosition;
 
 out vec3 vertexColor;
 out float inverseDistance;  // 1 / metres from the camera; 0 at infinity
+out vec3 worldPoint;        // the surface point, for the layer's reliability (a direction at infinity)
 
 void main() {
   int pixels = panoramaSize.x * panoramaSize.y;
@@ -35,9 +36,11 @@ void main() {
   if (isinf(distance)) {
     gl_Position = viewProjection * vec4(direction, 0.0);
     inverseDistance = 0.0;
+    worldPoint = direction;
   } else {
     vec3 world = sourcePosition + distance * direction;
     gl_Position = viewProjection * vec4(world, 1.0);
     inverseDistance = 1.0 / length(world - cameraPosition);
+    worldPoint = world;
   }
 }

@@ -120,6 +120,17 @@ void writeDataset(const std::filesystem::path& directory, const AnalyticScene& s
 
 }  // namespace
 
+AnalyticScene stripedRoom() {
+  AnalyticScene scene;
+  scene.room = AnalyticScene::Room{{-5.0f, -5.0f, 0.0f}, {5.0f, 5.0f, 3.0f}, false};
+  scene.shade = [](glm::vec3 point, int surface) {
+    const float along = surface < 2 ? point.y : point.x;  // walls x = const run along y, the others along x
+    const float stripe = 0.5f + 0.35f * std::sin(12.0f * along + 3.0f * point.z);
+    return glm::vec3(stripe, 0.3f + 0.1f * float(surface % 3), 1.0f - stripe);
+  };
+  return scene;
+}
+
 void writeWallAndClutterDataset(const std::filesystem::path& directory, int paths, int steps, int width, int probes) {
   AnalyticScene scene;
   scene.room = AnalyticScene::Room{{-1.0f, -1.0f, 0.0f}, {9.0f, 4.0f, 2.6f}, false};

@@ -50,6 +50,11 @@ Panorama renderPanorama(const AnalyticScene& scene, glm::vec3 position, int widt
 
 namespace triwalk::testing {
 
+// A 10 x 10 x 3 m room centred on the origin whose walls carry fine
+// sinusoidal stripes: a reference that saw a wall obliquely sampled them
+// coarsely, one that saw it face-on did not.
+AnalyticScene stripedRoom();
+
 // A room with a pillar and boxes, captured on a grid of paths x steps
 // (analytic rendering) plus probes, written as a data set in directory.
 void writeAnalyticDataset(const std::filesystem::path& directory, int paths, int steps, int width, int probes);

@@ -181,9 +181,10 @@ TEST_CASE("render --stats reports per frame the holes before the fill, none left
     const RunResult run = runTriwalk(directory, common + " --holes " + holes + " --stats " + stats.string(), true);
     INFO(run.err);
     REQUIRE(run.status == 0);
-    CHECK(run.out.find("(holes " + holes + ")") != std::string::npos);
+    CHECK(run.out.find("(holes " + holes + ", reliability weights)") != std::string::npos);
     const nlohmann::json document = nlohmann::json::parse(testing::readTextFileOrEmpty(stats));
     CHECK(document["holes"] == holes);
+    CHECK(document["blend_weights"] == "reliability");
     REQUIRE(document["frames"].size() == 2);
     for (size_t i = 0; i < 2; ++i) {
       const nlohmann::json& frame = document["frames"][i];

@@ -35,20 +35,32 @@ PinholeCamera testCamera(glm::vec3 position, float yaw, int width, int height) {
   return camera;
 }
 
-// GPU frame of a camera from three samples of a data set.
-Rgb8Image gpuFrame(const Dataset& dataset, const std::vector<int>& references, const PinholeCamera& camera,
-                   HeadlessBackend backend, HoleMode holes) {
+struct Reference {
+  Panorama panorama;
+  glm::vec3 position;
+};
+
+std::vector<Reference> loadReferences(const Dataset& dataset, const std::vector<int>& samples) {
+  std::vector<Reference> references;
+  for (int sample : samples) references.push_back({dataset.loadView(dataset.sample(sample)), dataset.sample(sample).position});
+  return references;
+}
+
+// GPU frame of a camera from up to three references.
+Rgb8Image gpuFrame(const std::vector<Reference>& references, const PinholeCamera& camera, HeadlessBackend backend,
+                   HoleMode holes, BlendWeights weights = BlendWeights::Reliability) {
   auto context = createHeadlessContext(backend);
   std::vector<std::unique_ptr<GpuPanorama>> panoramas;
   std::vector<const GpuPanorama*> pointers;
-  for (int sample : references) {
-    const ViewRecord& view = dataset.sample(sample);
-    panoramas.push_back(std::make_unique<GpuPanorama>(preparePanorama(dataset.loadView(view), view.position, 0.0f, WarpOptions{})));
+  for (const Reference& reference : references) {
+    panoramas.push_back(
+        std::make_unique<GpuPanorama>(preparePanorama(reference.panorama, reference.position, 0.0f, WarpOptions{})));
     pointers.push_back(panoramas.back().get());
   }
   GpuWarper warper(camera.width, camera.height);
   GpuWarpSettings settings;
   settings.holes = holes;
+  settings.blend.weights = weights;
   warper.render(camera, pointers, settings);
   return warper.readPixels();
 }
@@ -58,17 +70,17 @@ struct CpuFrame {
   size_t holesBefore = 0;
 };
 
-CpuFrame cpuFrame(const Dataset& dataset, const std::vector<int>& references, const PinholeCamera& camera,
-                  HoleMode holes) {
+CpuFrame cpuFrame(const std::vector<Reference>& references, const PinholeCamera& camera, HoleMode holes,
+                  BlendWeights weights = BlendWeights::Reliability) {
   std::vector<std::unique_ptr<WarpSource>> sources;
   std::vector<const WarpSource*> pointers;
-  for (int sample : references) {
-    const ViewRecord& view = dataset.sample(sample);
-    sources.push_back(std::make_unique<WarpSource>(dataset.loadView(view), view.position, 0.0f, WarpOptions{}));
+  for (const Reference& reference : references) {
+    sources.push_back(std::make_unique<WarpSource>(reference.panorama, reference.position, 0.0f, WarpOptions{}));
     pointers.push_back(sources.back().get());
   }
   SynthesisOptions options;
   options.holes = holes;
+  options.blend.weights = weights;
   const SynthesizedView view = synthesizeView(pointers, DestinationCamera::camera(camera), options);
   return {displayImage(view.blended, holes), view.fill.holesBefore};
 }
@@ -95,9 +107,10 @@ TEST_CASE("GPU warp matches the CPU reference warp (PSNR >= 35 dB), through EGL 
   for (const HoleMode mode : {HoleMode::Mark, HoleMode::Fill}) {
     for (const auto& [references, position, yaw] : views) {
       const PinholeCamera camera = testCamera(position, yaw, 320, 240);
-      const CpuFrame cpu = cpuFrame(dataset, references, camera, mode);
-      const Rgb8Image egl = gpuFrame(dataset, references, camera, HeadlessBackend::Egl, mode);
-      const Rgb8Image osmesa = gpuFrame(dataset, references, camera, HeadlessBackend::OsMesa, mode);
+      const std::vector<Reference> loaded = loadReferences(dataset, references);
+      const CpuFrame cpu = cpuFrame(loaded, camera, mode);
+      const Rgb8Image egl = gpuFrame(loaded, camera, HeadlessBackend::Egl, mode);
+      const Rgb8Image osmesa = gpuFrame(loaded, camera, HeadlessBackend::OsMesa, mode);
       holes += cpu.holesBefore;
       INFO(std::string(holeModeName(mode)) << ", yaw " << yaw << ": PSNR " << psnr(egl, cpu.image) << " dB, " << cpu.holesBefore
                               << " holes before filling");
@@ -112,6 +125,32 @@ TEST_CASE("GPU warp matches the CPU reference warp (PSNR >= 35 dB), through EGL 
   }
   // The frames have holes, so the filled comparison compares fills.
   CHECK(holes > 1000);
+}
+
+TEST_CASE("GPU and CPU blend with the same weights: reliability (the default) or inverse distance alone") {
+  testing::TemporaryDirectory directory;
+  // The striped room of blend_weights_test: the camera at (0, 3) looks at
+  // the wall y = 5; reference A stands before it, B off to the side sees it
+  // at a grazing angle (the reliability gives the wall to A).
+  const testing::AnalyticScene scene = testing::stripedRoom();
+  std::vector<Reference> references;
+  for (const glm::vec3 position : {glm::vec3(0.0f, 4.0f, 1.5f), glm::vec3(-4.0f, 3.2f, 1.5f)}) {
+    references.push_back({testing::renderPanorama(scene, position, 512), position});
+  }
+  PinholeCamera camera = testCamera({0.0f, 3.0f, 1.5f}, 90.0f, 320, 240);
+  camera.pitchDegrees = 0.0f;
+  const Rgb8Image gpuReliable = gpuFrame(references, camera, HeadlessBackend::Egl, HoleMode::Fill);
+  const Rgb8Image gpuDistance = gpuFrame(references, camera, HeadlessBackend::Egl, HoleMode::Fill, BlendWeights::Distance);
+  const CpuFrame cpuReliable = cpuFrame(references, camera, HoleMode::Fill);
+  const CpuFrame cpuDistance = cpuFrame(references, camera, HoleMode::Fill, BlendWeights::Distance);
+  const double across = psnr(gpuReliable, gpuDistance);
+  INFO("GPU vs CPU: reliability " << psnr(gpuReliable, cpuReliable.image) << " dB, distance "
+                                  << psnr(gpuDistance, cpuDistance.image) << " dB; reliability vs distance " << across << " dB");
+  CHECK(psnr(gpuReliable, cpuReliable.image) >= 35.0);
+  CHECK(psnr(gpuDistance, cpuDistance.image) >= 35.0);
+  // The choice changes the frame far more than GPU and CPU differ.
+  CHECK(across < psnr(gpuReliable, cpuReliable.image) - 6.0);
+  CHECK(psnr(cpuReliable.image, cpuDistance.image) < psnr(gpuReliable, cpuReliable.image) - 6.0);
 }
 
 TEST_CASE("the walkthrough renderer draws the three references of the triangle around the camera") {

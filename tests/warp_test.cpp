@@ -252,7 +252,7 @@ TEST_CASE("warp results are identical for any thread count") {
 TEST_CASE("blend: nearest layer wins, layers within epsilon average with inverse-distance weights") {
   // Three one-pixel layers: A at 2.0 m, B at 2.05 m (within 5% of A), C at 3 m (behind).
   auto layer = [](glm::vec3 color, float distance) {
-    WarpLayer l{ColorImage(1, 1, color), ScalarImage(1, 1, distance), {1}, 0, {}};
+    WarpLayer l{ColorImage(1, 1, color), ScalarImage(1, 1, distance), {1}, 0, {}, {}};
     return l;
   };
   const std::vector<WarpLayer> layers = {layer({1, 0, 0}, 2.0f), layer({0, 1, 0}, 2.05f), layer({0, 0, 1}, 3.0f)};

@@ -153,7 +153,9 @@ void registerRenderCommand(CLI::App& app) {
     settings.showSources = a.showSources;
     FrameStaging staging(a.out);
     std::map<int, std::unique_ptr<WarpSource>> cpuSources;
-    nlohmann::json statistics = {{"holes", holeModeName(synthesis.holes)}, {"frames", nlohmann::json::array()}};
+    nlohmann::json statistics = {{"holes", holeModeName(synthesis.holes)},
+                                 {"blend_weights", blendWeightsName(synthesis.blend.weights)},
+                                 {"frames", nlohmann::json::array()}};
     double psnrSum = 0.0, worstPsnr = INFINITY;
     double frameMilliseconds = 0.0;
     InterruptScope interruptScope;
@@ -197,8 +199,9 @@ void registerRenderCommand(CLI::App& app) {
     }
     progress.finish();
     staging.commit();
-    std::printf("rendered %zu frames %dx%d into %s (holes %s), %.1f ms a frame with loading\n", poses.size(), width,
-                height, a.out.c_str(), holeModeName(synthesis.holes), frameMilliseconds / double(poses.size()));
+    std::printf("rendered %zu frames %dx%d into %s (holes %s, %s weights), %.1f ms a frame with loading\n", poses.size(),
+                width, height, a.out.c_str(), holeModeName(synthesis.holes), blendWeightsName(synthesis.blend.weights),
+                frameMilliseconds / double(poses.size()));
     if (!a.stats.empty()) {
       writeJsonFile(a.stats, statistics);
       std::printf("wrote frame statistics to %s\n", a.stats.c_str());

@@ -29,6 +29,10 @@ void addBlendOptions(CLI::App& command, QualityArguments& arguments) {
       ->capture_default_str()->check(CLI::Range(0.0f, 10.0f))->group("Blend");
   command.add_option("--min-weight-distance", arguments.minimumWeightDistance, "r_min of the weights 1/max(d, r_min), metres")
       ->capture_default_str()->check(positiveNumber())->group("Blend");
+  command.add_option("--blend-weights", arguments.blendWeights,
+                     "Weights within the interval: reliability (inverse distance times how well each reference sampled "
+                     "the surface) or distance (inverse distance alone, the paper's)")
+      ->capture_default_str()->check(CLI::IsMember({"reliability", "distance"}))->group("Blend");
 }
 
 }  // namespace
@@ -64,6 +68,7 @@ SynthesisOptions synthesisOptions(const QualityArguments& arguments) {
   options.warp.maxDepthRatio = arguments.maxDepthRatio;
   options.blend.epsilon = arguments.epsilon;
   options.blend.minimumWeightDistance = arguments.minimumWeightDistance;
+  options.blend.weights = parseBlendWeights(arguments.blendWeights);
   options.holes = parseHoleMode(arguments.holes);
   return options;
 }
@@ -89,10 +94,10 @@ std::string describeQuality(const SynthesisOptions& synthesis, const ErrorOption
     std::snprintf(stretch, sizeof stretch, "no stretch test");
   }
   std::snprintf(text, sizeof text,
-                "warp %s (%s); blend epsilon %.3f, r_min %.2f m; holes %s; error E = %g R + %g B, delta %g/255, %s pixel "
-                "weighting",
+                "warp %s (%s); blend epsilon %.3f, r_min %.2f m, %s weights; holes %s; error E = %g R + %g B, delta "
+                "%g/255, %s pixel weighting",
                 warp.method == WarpMethod::Mesh ? "mesh" : "point", stretch, synthesis.blend.epsilon,
-                synthesis.blend.minimumWeightDistance,
+                synthesis.blend.minimumWeightDistance, blendWeightsName(synthesis.blend.weights),
                 synthesis.holes == HoleMode::Fill ? "filled" : "raw", error.alpha, error.beta, error.delta,
                 pixelWeightingName(error.weighting));
   return text;

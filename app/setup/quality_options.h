@@ -18,6 +18,7 @@ struct QualityArguments {
   bool pointWarp = false;
   float epsilon = BlendOptions{}.epsilon;
   float minimumWeightDistance = BlendOptions{}.minimumWeightDistance;
+  std::string blendWeights = blendWeightsName(BlendOptions{}.weights);
   double alpha = ErrorOptions{}.alpha;
   double beta = ErrorOptions{}.beta;
   double delta = ErrorOptions{}.delta;

@@ -30,6 +30,10 @@ void drawRenderPanel(ViewerState& state) {
   ImGui::Separator();
   ImGui::SliderFloat("epsilon", &state.warp.blend.epsilon, 0.001f, 0.5f, "%.3f", ImGuiSliderFlags_Logarithmic);
   ImGui::SliderFloat("r_min (m)", &state.warp.blend.minimumWeightDistance, 0.01f, 2.0f, "%.2f");
+  int weights = int(state.warp.blend.weights);
+  if (ImGui::Combo("weights", &weights, "inverse distance x reliability\0inverse distance (paper)\0")) {
+    state.warp.blend.weights = BlendWeights(weights);
+  }
   ImGui::SliderFloat("grazing angle", &state.grazingAngleDegrees, 0.5f, 30.0f, "%.1f deg");
   ImGui::SameLine();
   if (ImGui::Button("apply")) state.stretchChanged = true;

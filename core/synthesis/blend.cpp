@@ -2,11 +2,20 @@
 
 #include "core/support/errors.h"
 
-
 #include <cmath>
 #include <limits>
 
 namespace triwalk {
+
+BlendWeights parseBlendWeights(const std::string& name) {
+  if (name == "reliability") return BlendWeights::Reliability;
+  if (name == "distance") return BlendWeights::Distance;
+  throw InputError("--blend-weights", "unknown blend weights '" + name + "' (use reliability or distance)");
+}
+
+const char* blendWeightsName(BlendWeights weights) {
+  return weights == BlendWeights::Reliability ? "reliability" : "distance";
+}
 
 std::vector<float> blendWeights(glm::vec3 destination, std::span<const glm::vec3> sources, const BlendOptions& options) {
   std::vector<float> weights;

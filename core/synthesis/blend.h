@@ -2,8 +2,10 @@
 // Blend of warped layers, the paper's Eq. 1-2 made relative: per pixel,
 // z_front is the nearest distance over layers; the layers whose distance
 // lies within epsilon * z_front of it are averaged with weights
-// w_k = 1 / max(dist(D, S_k), r_min). Pixels no layer covers are holes.
-// Sky (+inf) blends with sky.
+// w_k = 1 / max(dist(D, S_k), r_min), times each layer's reliability at the
+// pixel (core/synthesis/warp_reliability.h) unless the paper's weights
+// alone are asked for. Pixels no layer covers are holes. Sky (+inf) blends
+// with sky.
 
 #include "core/synthesis/warp.h"
 
@@ -14,12 +16,24 @@
 #include <cmath>
 #include <limits>
 #include <span>
+#include <string>
 
 namespace triwalk {
+
+// What the blend weighs a layer by, within the epsilon interval.
+enum class BlendWeights {
+  Reliability,  // inverse distance times the layer's reliability at the pixel
+  Distance,     // inverse distance alone, the paper's
+};
+
+// Parses "reliability", "distance"; throws InputError naming --blend-weights.
+BlendWeights parseBlendWeights(const std::string& name);
+const char* blendWeightsName(BlendWeights weights);
 
 struct BlendOptions {
   float epsilon = 0.05f;               // relative depth interval around z_front
   float minimumWeightDistance = 0.1f;  // r_min, metres
+  BlendWeights weights = BlendWeights::Reliability;
 };
 
 struct BlendedView {
@@ -38,8 +52,9 @@ struct BlendedPixel {
 };
 
 // The blend of one pixel over layers of any storage: each layer's
-// coveredAt(pixel), distanceAt(pixel) and colorAt(pixel) (WarpLayer here, the
-// warped-layer cache's half-float layers for decimation).
+// coveredAt(pixel), distanceAt(pixel), colorAt(pixel) and
+// reliabilityAt(pixel) (WarpLayer here, the warped-layer cache's half-float
+// layers for decimation).
 template <typename Layer>
 BlendedPixel blendPixelOf(std::span<const Layer* const> layers, std::span<const float> weights, size_t pixel,
                           const BlendOptions& options) {
@@ -61,8 +76,10 @@ BlendedPixel blendPixelOf(std::span<const Layer* const> layers, std::span<const 
     if (std::isnan(d)) continue;
     const bool inInterval = std::isinf(front) ? std::isinf(d) : std::abs(d - front) < options.epsilon * front;
     if (!inInterval) continue;
-    sum += weights[k] * layers[k]->colorAt(pixel);
-    weightSum += weights[k];
+    const float weight =
+        options.weights == BlendWeights::Reliability ? weights[k] * layers[k]->reliabilityAt(pixel) : weights[k];
+    sum += weight * layers[k]->colorAt(pixel);
+    weightSum += weight;
     result.contributors |= uint8_t(1u << k);
   }
   result.color = sum / weightSum;

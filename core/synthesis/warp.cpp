@@ -1,6 +1,7 @@
 #include "core/synthesis/warp.h"
 
 #include "core/support/errors.h"
+#include "core/synthesis/warp_reliability.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -506,7 +507,8 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
 
   // Resolve: interpolate the winner's attributes at each pixel centre.
   WarpLayer layer{ColorImage(width, height), ScalarImage(width, height, std::numeric_limits<float>::infinity()),
-                  std::vector<uint8_t>(size_t(width) * size_t(height), 0), rasterized.load(), WarpTimings{}};
+                  std::vector<uint8_t>(size_t(width) * size_t(height), 0), rasterized.load(), WarpTimings{},
+                  std::vector<float>(size_t(width) * size_t(height), 1.0f)};
   tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y != rows.end(); ++y) {
       for (int x = 0; x < width; ++x) {
@@ -531,6 +533,12 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
         glm::vec3 color(0.0f);
         for (int k = 0; k < 3; ++k) color += float(coverage.weights[k]) * source.color(indices[k]);
         layer.color.pixels[i] = color;
+        if (!source.atInfinity(indices[0])) {
+          const glm::vec3 a = source.point(indices[0]), b = source.point(indices[1]), c = source.point(indices[2]);
+          const glm::vec3 point = float(coverage.weights[0]) * a + float(coverage.weights[1]) * b +
+                                  float(coverage.weights[2]) * c;
+          layer.reliability[i] = warpReliability(point, glm::cross(b - a, c - a), source.position(), destination.position);
+        }
       }
     }
   });

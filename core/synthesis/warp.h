@@ -118,11 +118,15 @@ struct WarpLayer {
   std::vector<uint8_t> covered;  // 1 where the source put something
   uint64_t trianglesRasterized = 0;
   WarpTimings timings;
+  // Per pixel, how well the source sampled what the destination sees there
+  // (core/synthesis/warp_reliability.h); empty means 1 everywhere.
+  std::vector<float> reliability;
 
   // The per-pixel view the blend reads (see blendPixelOf).
   bool coveredAt(size_t pixel) const { return covered[pixel] != 0; }
   float distanceAt(size_t pixel) const { return distance.pixels[pixel]; }
   glm::vec3 colorAt(size_t pixel) const { return color.pixels[pixel]; }
+  float reliabilityAt(size_t pixel) const { return reliability.empty() ? 1.0f : reliability[pixel]; }
 };
 
 WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destination, WarpMethod method);

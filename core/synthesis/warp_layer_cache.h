@@ -3,7 +3,7 @@
 // reuse. Neighbouring triangles share two vertices and often a
 // destination, and a dense sample is reconstructed from many triangles as
 // decimation proceeds, so most warps are needed again. Layers are kept in
-// half floats (8 bytes a pixel: the capture's own colour precision), least
+// half floats (10 bytes a pixel: the capture's own colour precision), least
 // recently used first out once the memory budget is reached. The cache
 // changes speed only, never a result.
 
@@ -21,8 +21,8 @@
 namespace triwalk {
 
 // A warped layer in half floats: per pixel linear r, g, b and the distance
-// (NaN where the source put nothing, +inf for sky). Read through the same
-// per-pixel view as WarpLayer, for the blend.
+// (NaN where the source put nothing, +inf for sky), and the reliability.
+// Read through the same per-pixel view as WarpLayer, for the blend.
 class CompactLayer {
 public:
   explicit CompactLayer(const WarpLayer& layer);
@@ -33,10 +33,12 @@ public:
     const Imath::half* v = &values_[4 * pixel];
     return {float(v[0]), float(v[1]), float(v[2])};
   }
-  size_t bytes() const { return values_.size() * sizeof(Imath::half); }
+  float reliabilityAt(size_t pixel) const { return float(reliability_[pixel]); }
+  size_t bytes() const { return (values_.size() + reliability_.size()) * sizeof(Imath::half); }
 
 private:
   std::vector<Imath::half> values_;
+  std::vector<Imath::half> reliability_;
 };
 
 class WarpLayerCache {

@@ -64,9 +64,14 @@ void GpuWarper::resize(int width, int height) {
   for (size_t k = 0; k < layers_.size(); ++k) {
     layers_[k] = createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(layers_[k].get(), 1, GL_RGBA16F, width, height);
+    reliabilities_[k] = createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(reliabilities_[k].get(), 1, GL_R16F, width, height);
     layerFramebuffers_[k] = createFramebuffer();
     glNamedFramebufferTexture(layerFramebuffers_[k].get(), GL_COLOR_ATTACHMENT0, layers_[k].get(), 0);
+    glNamedFramebufferTexture(layerFramebuffers_[k].get(), GL_COLOR_ATTACHMENT1, reliabilities_[k].get(), 0);
     glNamedFramebufferTexture(layerFramebuffers_[k].get(), GL_DEPTH_ATTACHMENT, depth_.get(), 0);
+    const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(layerFramebuffers_[k].get(), 2, buffers);
     requireCompleteFramebuffer(layerFramebuffers_[k], "warp layer");
   }
   output_ = createTexture(GL_TEXTURE_2D);
@@ -199,12 +204,15 @@ GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<cons
   glm::vec3 weightVector(0.0f);
   for (size_t k = 0; k < weights.size(); ++k) weightVector[int(k)] = weights[k];
   for (int k = 0; k < 3; ++k) {
-    const std::string name = "layer" + std::to_string(k);
-    resolveProgram_.set(name.c_str(), 2 + k);
+    const std::string layer = "layer" + std::to_string(k), reliability = "reliability" + std::to_string(k);
+    resolveProgram_.set(layer.c_str(), 2 + k);
     glBindTextureUnit(GLuint(2 + k), layers_[size_t(k)].get());
+    resolveProgram_.set(reliability.c_str(), 5 + k);
+    glBindTextureUnit(GLuint(5 + k), reliabilities_[size_t(k)].get());
   }
   resolveProgram_.set("layerCount", int(references.size()));
   resolveProgram_.set("weights", weightVector);
+  resolveProgram_.set("reliabilityWeights", settings.blend.weights == BlendWeights::Reliability ? 1 : 0);
   resolveProgram_.set("epsilon", settings.blend.epsilon);
   resolveProgram_.set("showSources", settings.showSources ? 1 : 0);
   resolveProgram_.set("holeColor", holeDisplayColor(settings.holes));

@@ -2,9 +2,9 @@
 // The GPU warp (docs/DESIGN.md, "Rendering"): the view of a pinhole camera from
 // up to three reference panoramas. Each reference is drawn as its grid mesh
 // into its own layer with a depth test (its nearest surface per pixel, as
-// the CPU reference keeps one layer per source); a full-screen resolve pass
-// then blends the layers within epsilon * z_front with the inverse-distance
-// weights into a linear image and the frame's display colours (holes
+// the CPU reference keeps one layer per source) and its reliability; a
+// full-screen resolve pass then blends the layers within epsilon * z_front
+// with the inverse-distance weights times reliability into a linear image and the frame's display colours (holes
 // marked, black, or left for the fill); the push-pull passes of the hole
 // fill (core/synthesis/hole_fill.h) then fill the holes from the
 // background, the last one on the hole pixels alone. One geometry pass per reference (not two over
@@ -72,6 +72,7 @@ private:
   ShaderProgram resolveProgram_;
   ShaderProgram pushProgram_, pullProgram_;
   std::array<GlTexture, 3> layers_;
+  std::array<GlTexture, 3> reliabilities_;  // each layer's reliability per pixel (R16F)
   GlTexture depth_;
   std::array<GlFramebuffer, 3> layerFramebuffers_;
   // Linear blend (rgb, inverse distance; -1 for holes), then the fill's

@@ -109,7 +109,7 @@ void registerSynthCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("synth", "Reconstruct a view from reference samples with the CPU warp");
   command->add_option("--dataset", arguments->dataset, "Data set directory")->required();
   command->add_option("--refs", arguments->references, "Reference sample ids, e.g. 12,13,27")->delimiter(',');
-  command->add_option("--at", arguments->at, "Destination position x,y,z in metres")->delimiter(',')->expected(3);
+  command->add_option("--at", arguments->at, "Destination position x,y,z in metres; default: the --truth view's")->delimiter(',')->expected(3);
   command->add_option("--truth", arguments->truth, "Ground truth view (sample id or pN); default: a view at --at");
   command->add_option("--out", arguments->out, "Directory for reconstruction, truth and heatmap PNGs")->check(writableDirectory());
   command->add_option("--width", arguments->width, "Work at this panorama width (divides the data set's); 0 = full")
@@ -130,12 +130,15 @@ void registerSynthCommand(CLI::App& app) {
       probeStudy(dataset, a.width, synthesis, errors);
       return;
     }
-    if (a.references.empty() || a.at.empty()) throw InputError("synth", "give --refs and --at, or --all-probes");
+    if (a.references.empty() || (a.at.empty() && a.truth.empty())) {
+      throw InputError("synth", "give --refs and --at (or --truth, whose position it is), or --all-probes");
+    }
     if (a.references.size() > 8) throw InputError("--refs", "at most 8 references");
     std::vector<int> references;
     for (const std::string& name : a.references) references.push_back(findSampleIndex(dataset, name, "--refs"));
-    const glm::vec3 at(a.at[0], a.at[1], a.at[2]);
-    const ViewRecord* truthView = a.truth.empty() ? viewAt(dataset, at) : &findView(dataset, a.truth, "--truth");
+    const ViewRecord* named = a.truth.empty() ? nullptr : &findView(dataset, a.truth, "--truth");
+    const glm::vec3 at = a.at.empty() ? named->position : glm::vec3(a.at[0], a.at[1], a.at[2]);
+    const ViewRecord* truthView = named ? named : viewAt(dataset, at);
     std::unique_ptr<Panorama> truth;
     if (truthView) truth = std::make_unique<Panorama>(dataset.loadView(*truthView, a.width));
 

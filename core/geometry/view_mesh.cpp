@@ -54,10 +54,6 @@ std::vector<Triangle> delaunayOf(const std::vector<glm::dvec2>& positions, std::
   return triangles;
 }
 
-std::shared_ptr<const WalkableRegion> shared(const WalkableRegion* region) {
-  return region && !region->empty() ? std::make_shared<const WalkableRegion>(*region) : nullptr;
-}
-
 void keepInside(std::vector<Triangle>& triangles, const std::vector<glm::dvec2>& positions, const WalkableRegion* region) {
   if (!region || region->empty()) return;
   std::erase_if(triangles, [&](const Triangle& t) {
@@ -75,7 +71,7 @@ ViewMesh ViewMesh::delaunay(std::vector<glm::dvec2> positions, std::span<const i
   if (triangles.empty()) throw InputError(subject, "the sample positions are collinear: they do not span an area to triangulate");
   keepInside(triangles, positions, region);
   if (triangles.empty()) throw InputError(subject, "no triangle of the samples lies inside the walkable region");
-  return ViewMesh(std::move(positions), std::move(triangles), shared(region));
+  return ViewMesh(std::move(positions), std::move(triangles), sharedRegion(region));
 }
 
 std::optional<ViewMesh> ViewMesh::tryDelaunay(std::vector<glm::dvec2> positions, std::span<const int> samples,
@@ -83,7 +79,7 @@ std::optional<ViewMesh> ViewMesh::tryDelaunay(std::vector<glm::dvec2> positions,
   std::vector<Triangle> triangles = delaunayOf(positions, samples);
   keepInside(triangles, positions, region);
   if (triangles.empty()) return std::nullopt;
-  return ViewMesh(std::move(positions), std::move(triangles), shared(region));
+  return ViewMesh(std::move(positions), std::move(triangles), sharedRegion(region));
 }
 
 glm::dvec2 ViewMesh::centroid(int triangle) const {
@@ -163,17 +159,18 @@ int ViewMesh::locate(glm::dvec2 point, int hint) const {
   }
   std::sort(byDistance.begin(), byDistance.end());
   for (const auto& [distance, vertices, t] : byDistance) {
-    if (!servingRank(t, point).blind) return t;
+    if (!servingRank(t, point, distance).blind) return t;
   }
   return std::get<2>(byDistance.front());
 }
 
 ServingRank ViewMesh::servingRank(int triangle, glm::dvec2 point) const {
-  const Triangle& t = triangles_[size_t(triangle)];
-  const double distance = distanceToTriangle(triangle, point);
-  if (distance == 0.0 || !region_) return {false, distance, sortedTriangle(t)};
-  const bool sees = std::all_of(t.begin(), t.end(), [&](int v) { return region_->lineOfSight(position(v), point); });
-  return {!sees, distance, sortedTriangle(t)};
+  return servingRank(triangle, point, distanceToTriangle(triangle, point));
+}
+
+ServingRank ViewMesh::servingRank(int triangle, glm::dvec2 point, double distance) const {
+  return rankTriangle(triangles_[size_t(triangle)], distance,
+                      [&](int v) { return !region_ || region_->lineOfSight(position(v), point); });
 }
 
 }  // namespace triwalk

@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <compare>
 #include <memory>
 #include <optional>
@@ -30,6 +31,15 @@ struct ServingRank {
   Triangle vertices{};  // sorted
   auto operator<=>(const ServingRank&) const = default;
 };
+
+// The rank of a triangle at distance from a position (0 inside): blind
+// when outside and some reference v does not see the position, sees(v).
+// ViewMesh::locate and the decimator rank with this one rule.
+template <typename Sees>
+ServingRank rankTriangle(const Triangle& triangle, double distance, Sees&& sees) {
+  const bool blind = distance > 0.0 && !std::all_of(triangle.begin(), triangle.end(), sees);
+  return {blind, distance, sortedTriangle(triangle)};
+}
 
 class ViewMesh {
 public:
@@ -75,7 +85,7 @@ public:
   // The triangle containing point, walking from hint (any triangle or -1).
   // Outside the covered area: the best ServingRank (the nearest triangle
   // whose references see the point, else the nearest), ties to the lower
-  // id. -1 only if empty.
+  // sorted vertex triple. -1 only if empty.
   int locate(glm::dvec2 point, int hint = -1) const;
   ServingRank servingRank(int triangle, glm::dvec2 point) const;
   // Distance from point to a triangle (0 inside).
@@ -88,6 +98,8 @@ private:
   std::vector<int> vertices_;
   std::vector<std::vector<int>> trianglesOfSample_;
   std::shared_ptr<const WalkableRegion> region_;
+
+  ServingRank servingRank(int triangle, glm::dvec2 point, double distance) const;
 };
 
 }  // namespace triwalk

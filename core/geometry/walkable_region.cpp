@@ -161,6 +161,10 @@ bool WalkableRegion::containsSegment(glm::dvec2 a, glm::dvec2 b) const {
   return true;
 }
 
+std::shared_ptr<const WalkableRegion> sharedRegion(const WalkableRegion* region) {
+  return region && !region->empty() ? std::make_shared<const WalkableRegion>(*region) : nullptr;
+}
+
 bool WalkableRegion::lineOfSight(glm::dvec2 a, glm::dvec2 b) const {
   return convex_ || containsSegment(a, b);
 }

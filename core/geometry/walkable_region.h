@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -61,6 +62,9 @@ private:
   std::vector<RegionPolygon> polygons_;
   bool convex_ = true;
 };
+
+// A shared copy of region for meshes to keep; null for none or an empty one.
+std::shared_ptr<const WalkableRegion> sharedRegion(const WalkableRegion* region);
 
 // Each sample's share of the region: the area of the part of it nearer to
 // that sample than to any other (its Voronoi cell clipped to the region),

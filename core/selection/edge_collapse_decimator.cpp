@@ -476,10 +476,8 @@ const Triangle& EdgeCollapseDecimator::servingTriangle(const Plan& plan, size_t 
 
 // As ViewMesh::locate ranks triangles, from the samples' own positions.
 ServingRank EdgeCollapseDecimator::servingRank(const Triangle& triangle, int sample) const {
-  const double distance = distanceToTriangle(positions_, triangle, positions_[size_t(sample)]);
-  if (distance == 0.0 || sight_.empty()) return {false, distance, sortedTriangle(triangle)};
-  const bool sees = std::all_of(triangle.begin(), triangle.end(), [&](int v) { return seesEachOther(v, sample); });
-  return {!sees, distance, sortedTriangle(triangle)};
+  return rankTriangle(triangle, distanceToTriangle(positions_, triangle, positions_[size_t(sample)]),
+                      [&](int v) { return sight_.empty() || seesEachOther(v, sample); });
 }
 
 bool EdgeCollapseDecimator::seesEachOther(int reference, int sample) const {

@@ -7,7 +7,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <memory>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -125,9 +124,7 @@ RefinementResult refineSelection(std::span<const glm::dvec2> positions, const st
   result.radius = options.radius.value_or(neighbourhoodRadius(positions));
   ObjectiveEvaluator evaluator(positions, options.sampleWeights, options.region, errors, result);
   TRIWALK_CHECK(!current.empty(), "refining a selection needs its triangles");
-  ViewMesh mesh(std::vector<glm::dvec2>(positions.begin(), positions.end()), current,
-                options.region && !options.region->empty() ? std::make_shared<const WalkableRegion>(*options.region)
-                                                           : nullptr);
+  ViewMesh mesh(std::vector<glm::dvec2>(positions.begin(), positions.end()), current, sharedRegion(options.region));
   std::vector<int> references = mesh.vertices();  // sorted
   std::vector<SampleReconstruction> assignment = evaluator.assignments(mesh);
   evaluator.compute({assignment});

@@ -4,10 +4,11 @@
 // into its own layer with a depth test (its nearest surface per pixel, as
 // the CPU reference keeps one layer per source) and its reliability; a
 // full-screen resolve pass then blends the layers within epsilon * z_front
-// with the inverse-distance weights times reliability into a linear image and the frame's display colours (holes
-// marked, black, or left for the fill); the push-pull passes of the hole
-// fill (core/synthesis/hole_fill.h) then fill the holes from the
-// background, the last one on the hole pixels alone. One geometry pass per reference (not two over
+// with the inverse-distance weights times reliability into a linear image
+// and the frame's display colours (holes marked, black, or left for the
+// fill); the push-pull passes of the hole fill (core/synthesis/hole_fill.h)
+// then fill the holes from the background, the last one on the hole pixels
+// alone. One geometry pass per reference (not two over
 // all references) halves the triangles llvmpipe sets up, and matches the
 // CPU reference exactly where a reference overlaps itself. Tiles of the
 // reference grids outside the view frustum are not drawn.

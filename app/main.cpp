@@ -13,6 +13,8 @@ int main(int argc, char** argv) {
   CLI::App app{"triwalk: select reference panoramas by edge-collapse decimation and walk through them"};
   app.require_subcommand(1);
   triwalk::registerCaptureCommand(app);
+  triwalk::registerImportCommand(app);
+  triwalk::registerExportCommand(app);
   triwalk::registerExportPngCommand(app);
   triwalk::registerRegionCommand(app);
   triwalk::registerSynthCommand(app);

@@ -185,7 +185,8 @@ void writeWallAndClutterDataset(const std::filesystem::path& directory, int path
   writeDataset(directory, scene, "wall-and-clutter", std::move(samples), std::move(probeViews), width);
 }
 
-void writeAnalyticDataset(const std::filesystem::path& directory, int paths, int steps, int width, int probes) {
+void writeAnalyticDataset(const std::filesystem::path& directory, int paths, int steps, int width, int probes,
+                          float jitter) {
   AnalyticScene scene;
   scene.room = AnalyticScene::Room{{-2.0f, -2.0f, 0.0f}, {6.0f, 4.0f, 2.8f}, false};
   scene.cylinders.push_back({{1.5f, 2.6f}, 0.25f, 0.0f, 2.8f});
@@ -198,14 +199,22 @@ void writeAnalyticDataset(const std::filesystem::path& directory, int paths, int
   manifest.width = width;
   manifest.height = width / 2;
   // Paths along y over x in [0, 4], steps over y in [0, 2].
+  const glm::vec2 spacing(4.0f / float(paths - 1), 2.0f / float(steps - 1));
+  std::mt19937 engine(7);
+  const auto offset = [&] { return jitter * (float(engine() >> 8) / 16777216.0f - 0.5f) * 2.0f; };
   for (int path = 0; path < paths; ++path) {
     for (int step = 0; step < steps; ++step) {
       ViewRecord sample;
       sample.id = int(manifest.samples.size());
       sample.file = "samples/s" + std::to_string(sample.id) + ".exr";
-      sample.position = {4.0f * float(path) / float(paths - 1), 2.0f * float(step) / float(steps - 1), 1.5f};
+      sample.position = {spacing.x * float(path), spacing.y * float(step), 1.5f};
       sample.path = path;
       sample.step = step;
+      if (jitter > 0.0f) {
+        sample.position.x += offset() * spacing.x;
+        sample.position.y += offset() * spacing.y;
+        sample.path = sample.step = -1;
+      }
       manifest.samples.push_back(sample);
     }
   }

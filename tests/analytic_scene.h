@@ -57,7 +57,10 @@ AnalyticScene stripedRoom();
 
 // A room with a pillar and boxes, captured on a grid of paths x steps
 // (analytic rendering) plus probes, written as a data set in directory.
-void writeAnalyticDataset(const std::filesystem::path& directory, int paths, int steps, int width, int probes);
+// With jitter > 0 the samples leave the grid: each moves by up to jitter x
+// the grid's spacing (seeded), and the manifest knows no paths.
+void writeAnalyticDataset(const std::filesystem::path& directory, int paths, int steps, int width, int probes,
+                          float jitter = 0.0f);
 
 // A long room whose half x < 4 m is bare with plain walls (any view
 // reconstructs it well) and whose half x > 4 m is cluttered with striped

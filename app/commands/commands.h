@@ -15,5 +15,7 @@ void registerEvalCommand(CLI::App& app);
 void registerRenderCommand(CLI::App& app);
 void registerViewCommand(CLI::App& app);
 void registerSuiteCommand(CLI::App& app);
+void registerImportCommand(CLI::App& app);
+void registerExportCommand(CLI::App& app);
 
 }  // namespace triwalk

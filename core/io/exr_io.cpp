@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -80,20 +81,53 @@ void checkHeaderBeforeOpenExr(const std::filesystem::path& path) {
   }
 }
 
+// An OpenEXR file opened after the checks above, with its data window.
+struct OpenedExr {
+  std::unique_ptr<Imf::InputFile> file;
+  Imath::Box2i window;
+  int width = 0;
+  int height = 0;
+  const Imf::ChannelList& channels() const { return file->header().channels(); }
+};
+
+OpenedExr openExr(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  if (!std::filesystem::is_regular_file(path)) throw InputError(name, "file does not exist");
+  checkHeaderBeforeOpenExr(path);
+  OpenedExr opened;
+  opened.file = std::make_unique<Imf::InputFile>(name.c_str());
+  opened.window = opened.file->header().dataWindow();
+  const int64_t width = int64_t(opened.window.max.x) - int64_t(opened.window.min.x) + 1;
+  const int64_t height = int64_t(opened.window.max.y) - int64_t(opened.window.min.y) + 1;
+  checkWindowSize(name, width, height);
+  opened.width = int(width);
+  opened.height = int(height);
+  return opened;
+}
+
+// Runs read, turning OpenEXR's exceptions into InputError naming the file.
+template <class Read>
+auto readingExr(const std::filesystem::path& path, Read read) {
+  try {
+    return read();
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& error) {
+    throw InputError(path.string(), std::string("cannot read OpenEXR: ") + error.what());
+  }
+}
+
+std::string pixelName(size_t index, int width) {
+  return std::to_string(index % size_t(width)) + "," + std::to_string(index / size_t(width));
+}
+
 }  // namespace
 
 Panorama readPanoramaExr(const std::filesystem::path& path, std::optional<glm::ivec2> expectedSize) {
   const std::string name = path.string();
-  if (!std::filesystem::exists(path)) throw InputError(name, "file does not exist");
-  try {
-    checkHeaderBeforeOpenExr(path);
-    Imf::InputFile file(name.c_str());
-    const Imf::Header& header = file.header();
-    const Imath::Box2i window = header.dataWindow();
-    const int64_t windowWidth = int64_t(window.max.x) - int64_t(window.min.x) + 1;
-    const int64_t windowHeight = int64_t(window.max.y) - int64_t(window.min.y) + 1;
-    checkWindowSize(name, windowWidth, windowHeight);
-    const int width = int(windowWidth), height = int(windowHeight);
+  return readingExr(path, [&] {
+    OpenedExr exr = openExr(path);
+    const int width = exr.width, height = exr.height;
     const std::string size = std::to_string(width) + "x" + std::to_string(height);
     if (expectedSize && (width != expectedSize->x || height != expectedSize->y)) {
       throw InputError(name, "size " + size + " but the manifest says " + std::to_string(expectedSize->x) + "x" +
@@ -101,11 +135,11 @@ Panorama readPanoramaExr(const std::filesystem::path& path, std::optional<glm::i
     }
 
     for (const char* channel : kColorChannels) {
-      if (!header.channels().findChannel(channel)) {
+      if (!exr.channels().findChannel(channel)) {
         throw InputError(name, std::string("missing channel ") + channel);
       }
     }
-    if (!header.channels().findChannel(kDistanceChannel)) throw InputError(name, "missing channel Z (distance)");
+    if (!exr.channels().findChannel(kDistanceChannel)) throw InputError(name, "missing channel Z (distance)");
 
     const size_t pixelCount = size_t(width) * size_t(height);
     std::vector<half> channels[3];
@@ -113,37 +147,85 @@ Panorama readPanoramaExr(const std::filesystem::path& path, std::optional<glm::i
     Imf::FrameBuffer frameBuffer;
     for (int c = 0; c < 3; ++c) {
       channels[c].resize(pixelCount);
-      frameBuffer.insert(kColorChannels[c], Imf::Slice::Make(Imf::HALF, channels[c].data(), window));
+      frameBuffer.insert(kColorChannels[c], Imf::Slice::Make(Imf::HALF, channels[c].data(), exr.window));
     }
-    frameBuffer.insert(kDistanceChannel, Imf::Slice::Make(Imf::FLOAT, distance.data(), window));
-    file.setFrameBuffer(frameBuffer);
-    file.readPixels(window.min.y, window.max.y);
+    frameBuffer.insert(kDistanceChannel, Imf::Slice::Make(Imf::FLOAT, distance.data(), exr.window));
+    exr.file->setFrameBuffer(frameBuffer);
+    exr.file->readPixels(exr.window.min.y, exr.window.max.y);
 
     Panorama panorama{ColorImage(width, height), ScalarImage(width, height)};
     for (size_t i = 0; i < pixelCount; ++i) {
       const glm::vec3 color{float(channels[0][i]), float(channels[1][i]), float(channels[2][i])};
       if (!std::isfinite(color.r) || !std::isfinite(color.g) || !std::isfinite(color.b)) {
-        throw InputError(name, "non-finite color at pixel " + std::to_string(i % size_t(width)) + "," +
-                                   std::to_string(i / size_t(width)));
+        throw InputError(name, "non-finite color at pixel " + pixelName(i, width));
       }
       const float d = distance[i];
-      if (std::isnan(d)) {
-        throw InputError(name, "NaN distance at pixel " + std::to_string(i % size_t(width)) + "," +
-                                   std::to_string(i / size_t(width)));
-      }
-      if (d < 0.0f) {
-        throw InputError(name, "negative distance at pixel " + std::to_string(i % size_t(width)) + "," +
-                                   std::to_string(i / size_t(width)));
-      }
+      if (std::isnan(d)) throw InputError(name, "NaN distance at pixel " + pixelName(i, width));
+      if (d < 0.0f) throw InputError(name, "negative distance at pixel " + pixelName(i, width));
       panorama.color.pixels[i] = color;
       panorama.distance.pixels[i] = d;
     }
     return panorama;
-  } catch (const InputError&) {
-    throw;
-  } catch (const std::exception& error) {
-    throw InputError(name, std::string("cannot read OpenEXR: ") + error.what());
-  }
+  });
+}
+
+ScalarImage readDepthExr(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  return readingExr(path, [&] {
+    OpenedExr exr = openExr(path);
+    std::string channel;
+    const Imf::ChannelList& channels = exr.channels();
+    size_t channelCount = 0;
+    for (auto it = channels.begin(); it != channels.end(); ++it) ++channelCount;
+    if (channelCount == 1) {
+      channel = channels.begin().name();
+    } else {
+      for (const char* candidate : {"Z", "Y", "R", "depth"}) {
+        if (channels.findChannel(candidate)) {
+          channel = candidate;
+          break;
+        }
+      }
+    }
+    if (channel.empty()) throw InputError(name, "no depth channel (expected one channel, or Z, Y, R or depth)");
+    ScalarImage depth(exr.width, exr.height);
+    Imf::FrameBuffer frameBuffer;
+    frameBuffer.insert(channel, Imf::Slice::Make(Imf::FLOAT, depth.pixels.data(), exr.window));
+    exr.file->setFrameBuffer(frameBuffer);
+    exr.file->readPixels(exr.window.min.y, exr.window.max.y);
+    for (size_t i = 0; i < depth.pixelCount(); ++i) {
+      if (std::isnan(depth.pixels[i])) throw InputError(name, "NaN depth at pixel " + pixelName(i, exr.width));
+      if (depth.pixels[i] < 0.0f) throw InputError(name, "negative depth at pixel " + pixelName(i, exr.width));
+    }
+    return depth;
+  });
+}
+
+glm::ivec2 exrFileSize(const std::filesystem::path& path) {
+  return readingExr(path, [&] {
+    const OpenedExr exr = openExr(path);
+    return glm::ivec2(exr.width, exr.height);
+  });
+}
+
+void writeDepthExr(const std::filesystem::path& path, const ScalarImage& depth) {
+  TRIWALK_CHECK(!depth.empty(), "empty depth image");
+  writeFileAtomically(path, [&](const std::filesystem::path& temporary) {
+    try {
+      Imf::Header header(depth.width, depth.height);
+      header.compression() = Imf::ZIP_COMPRESSION;
+      header.channels().insert(kDistanceChannel, Imf::Channel(Imf::FLOAT));
+      Imf::FrameBuffer frameBuffer;
+      frameBuffer.insert(kDistanceChannel,
+                         Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(const_cast<float*>(depth.pixels.data())),
+                                    sizeof(float), sizeof(float) * size_t(depth.width)));
+      Imf::OutputFile file(temporary.string().c_str(), header);
+      file.setFrameBuffer(frameBuffer);
+      file.writePixels(depth.height);
+    } catch (const std::exception& error) {
+      throw InputError(path.string(), std::string("cannot write OpenEXR: ") + error.what());
+    }
+  });
 }
 
 void writePanoramaExr(const std::filesystem::path& path, const Panorama& panorama) {

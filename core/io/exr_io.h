@@ -26,4 +26,16 @@ Panorama readPanoramaExr(const std::filesystem::path& path, std::optional<glm::i
 // Writes atomically (temporary file + rename).
 void writePanoramaExr(const std::filesystem::path& path, const Panorama& panorama);
 
+// A single-channel float depth map (the depth EXRs of RGB-D captures): the
+// file's only channel, else the first of Z, Y, R, depth. NaN or negative
+// values are refused; 0 and +inf come back as they are (the importer
+// treats both as "no depth").
+ScalarImage readDepthExr(const std::filesystem::path& path);
+
+// The size of an EXR's data window, from its header alone.
+glm::ivec2 exrFileSize(const std::filesystem::path& path);
+
+// Writes one float channel "Z", atomically.
+void writeDepthExr(const std::filesystem::path& path, const ScalarImage& depth);
+
 }  // namespace triwalk

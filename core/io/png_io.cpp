@@ -8,7 +8,10 @@
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
+#include <png.h>
+
 #include <cmath>
+#include <memory>
 
 namespace triwalk {
 
@@ -30,6 +33,47 @@ Rgb8Image readPng(const std::filesystem::path& path) {
   for (size_t i = 0; i < image.pixelCount(); ++i) image.pixels[i] = {data[3 * i], data[3 * i + 1], data[3 * i + 2]};
   stbi_image_free(data);
   return image;
+}
+
+glm::ivec2 imageFileSize(const std::filesystem::path& path) {
+  if (!std::filesystem::is_regular_file(path)) throw InputError(path.string(), "file does not exist");
+  int width = 0, height = 0, channels = 0;
+  if (!stbi_info(path.string().c_str(), &width, &height, &channels)) {
+    throw InputError(path.string(), std::string("cannot read image: ") + stbi_failure_reason());
+  }
+  return {width, height};
+}
+
+Gray16Image readPng16(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  if (!std::filesystem::is_regular_file(path)) throw InputError(name, "file does not exist");
+  int width = 0, height = 0, channels = 0;
+  if (!stbi_info(name.c_str(), &width, &height, &channels)) {
+    throw InputError(name, std::string("cannot read image: ") + stbi_failure_reason());
+  }
+  if (!stbi_is_16_bit(name.c_str())) throw InputError(name, "not a 16-bit PNG (depth maps need 16 bits)");
+  if (channels != 1) throw InputError(name, "has " + std::to_string(channels) + " channels; a depth map has one");
+  std::unique_ptr<stbi_us, void (*)(void*)> data(stbi_load_16(name.c_str(), &width, &height, &channels, 1),
+                                                 stbi_image_free);
+  if (!data) throw InputError(name, std::string("cannot read image: ") + stbi_failure_reason());
+  Gray16Image image(width, height);
+  std::copy_n(data.get(), image.pixelCount(), image.pixels.begin());
+  return image;
+}
+
+void writePng16(const std::filesystem::path& path, const Gray16Image& image) {
+  TRIWALK_CHECK(!image.empty(), "empty image");
+  writeFileAtomically(path, [&](const std::filesystem::path& temporary) {
+    png_image header{};
+    header.version = PNG_IMAGE_VERSION;
+    header.width = png_uint_32(image.width);
+    header.height = png_uint_32(image.height);
+    // LINEAR marks 16-bit samples stored as given, without gamma encoding.
+    header.format = PNG_FORMAT_LINEAR_Y;
+    if (!png_image_write_to_file(&header, temporary.string().c_str(), 0, image.pixels.data(), 0, nullptr)) {
+      throw InputError(path.string(), std::string("cannot write PNG: ") + header.message);
+    }
+  });
 }
 
 Rgba8Image decodeImage(std::span<const uint8_t> bytes, const std::string& subject) {

@@ -27,6 +27,18 @@ struct Rgba8Image {
 };
 Rgba8Image decodeImage(std::span<const uint8_t> bytes, const std::string& subject);
 
+// The size of any image stb can read (PNG, JPEG, ...), from its header
+// alone, so a whole capture can be checked before any pixel is decoded.
+glm::ivec2 imageFileSize(const std::filesystem::path& path);
+
+// A 16-bit single-channel PNG (depth maps of RGB-D captures). Reading
+// refuses 8-bit or multi-channel files: widening them would silently
+// change the values' meaning.
+using Gray16Image = Image<uint16_t>;
+Gray16Image readPng16(const std::filesystem::path& path);
+// Writes atomically, through libpng (stb writes only 8 bits).
+void writePng16(const std::filesystem::path& path, const Gray16Image& image);
+
 // Linear color to display bytes.
 Rgb8Image toDisplayImage(const ColorImage& linear);
 

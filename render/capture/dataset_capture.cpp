@@ -1,6 +1,7 @@
 #include "render/capture/dataset_capture.h"
 
 #include "core/io/exr_io.h"
+#include "core/io/staged_directory.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 #include "render/capture/panorama_capturer.h"
@@ -23,23 +24,6 @@ std::string numberedFile(const char* format, int id) {
 // Uniform float in [0, 1) from a 32-bit engine, the same on every platform
 // (std::uniform_real_distribution is not).
 float unitRandom(std::mt19937& engine) { return float(engine() >> 8) * (1.0f / 16777216.0f); }
-
-// Replaces an existing data set only after the new one is complete.
-void moveIntoPlace(const std::filesystem::path& staging, const std::filesystem::path& target) {
-  std::error_code error;
-  if (std::filesystem::exists(target)) {
-    const std::filesystem::path old = target.string() + ".old-triwalk";
-    std::filesystem::remove_all(old, error);
-    std::filesystem::rename(target, old, error);
-    if (error) throw InputError(target.string(), "cannot replace the existing data set: " + error.message());
-    std::filesystem::rename(staging, target, error);
-    if (error) throw InputError(target.string(), "cannot move the new data set into place: " + error.message());
-    std::filesystem::remove_all(old, error);
-  } else {
-    std::filesystem::rename(staging, target, error);
-    if (error) throw InputError(target.string(), "cannot move the new data set into place: " + error.message());
-  }
-}
 
 }  // namespace
 
@@ -170,19 +154,14 @@ CaptureSummary captureDataset(const Scene& sceneWithDoors, const std::string& sc
   std::optional<Scene> doorsOpen;
   const Scene& scene = hasDoors && !options.closedDoors ? doorsOpen.emplace(withDoorsOpen(sceneWithDoors)) : sceneWithDoors;
   const CapturePlan plan = planCapture(scene, options);
-  if (std::filesystem::exists(outDirectory) && !std::filesystem::is_empty(outDirectory) &&
-      !std::filesystem::exists(outDirectory / kManifestFileName)) {
-    throw InputError(outDirectory.string(), "exists and is not a triwalk data set; refusing to overwrite it");
-  }
-  const std::filesystem::path staging = outDirectory.string() + ".partial-triwalk";
+  StagedDirectory staging(outDirectory, kManifestFileName);
   std::error_code error;
-  std::filesystem::remove_all(staging, error);
-  std::filesystem::create_directories(staging / "samples", error);
-  std::filesystem::create_directories(staging / "probes", error);
-  if (error) throw InputError(staging.string(), "cannot create directory: " + error.message());
+  std::filesystem::create_directories(staging.path() / "samples", error);
+  std::filesystem::create_directories(staging.path() / "probes", error);
+  if (error) throw InputError(staging.path().string(), "cannot create directory: " + error.message());
 
   CaptureSummary summary;
-  try {
+  {
     InterruptScope interruptScope;
     PanoramaCapturer capturer(scene, options.width, options.faceSize);
     summary.sceneTriangles = capturer.sceneTriangles();
@@ -205,7 +184,7 @@ CaptureSummary captureDataset(const Scene& sceneWithDoors, const std::string& sc
                      view->file.c_str(), view->position.x, view->position.y, view->position.z, tooClose);
       }
       if (pendingWrite.valid()) pendingWrite.get();
-      pendingWrite = std::async(std::launch::async, [path = staging / view->file, panorama = std::move(panorama)] {
+      pendingWrite = std::async(std::launch::async, [path = staging.path() / view->file, panorama = std::move(panorama)] {
         writePanoramaExr(path, panorama);
       });
       progress.advance();
@@ -229,11 +208,8 @@ CaptureSummary captureDataset(const Scene& sceneWithDoors, const std::string& sc
                         {"face_size", options.faceSize > 0 ? options.faceSize : defaultCubeFaceSize(options.width)},
                         {"probe_seed", options.seed}};
     if (hasDoors) manifest.capture["doors"] = options.closedDoors ? "closed" : "open";
-    writeManifest(staging, manifest);
-    moveIntoPlace(staging, outDirectory);
-  } catch (...) {
-    std::filesystem::remove_all(staging, error);
-    throw;
+    writeManifest(staging.path(), manifest);
+    staging.commit();
   }
   summary.samples = int(plan.samples.size());
   summary.probes = int(plan.probes.size());

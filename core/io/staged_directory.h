@@ -1,0 +1,30 @@
+#pragma once
+// An output folder built beside its destination ("<out>.partial-triwalk")
+// and moved into place only when complete, so an error or Ctrl-C never
+// leaves a half-written data set where a whole one is expected.
+
+#include <filesystem>
+#include <string>
+
+namespace triwalk {
+
+class StagedDirectory {
+public:
+  // Refuses (InputError) a destination that exists, is not empty and does
+  // not hold ownMarker (e.g. manifest.json: a data set it may replace);
+  // with an empty marker any non-empty destination is refused.
+  StagedDirectory(std::filesystem::path destination, const std::string& ownMarker);
+  ~StagedDirectory();  // removes the staging folder unless committed
+  StagedDirectory(const StagedDirectory&) = delete;
+  StagedDirectory& operator=(const StagedDirectory&) = delete;
+
+  const std::filesystem::path& path() const { return staging_; }
+  // Replaces the destination with the staging folder.
+  void commit();
+
+private:
+  std::filesystem::path destination_, staging_;
+  bool committed_ = false;
+};
+
+}  // namespace triwalk

@@ -196,4 +196,67 @@ TEST_CASE("render --stats reports per frame the holes before the fill, none left
   }
 }
 
+TEST_CASE("an irregular data set without paths decimates, evaluates against every baseline and renders") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 5, 4, 64, 6, 0.35f);
+  const std::string data = " --dataset " + (directory / "data").string();
+  const std::filesystem::path selection = directory / "selection.json", rows = directory / "rows.json";
+  const RunResult decimate = runTriwalk(directory, "decimate --quiet --target 6" + data + " --out " + selection.string());
+  INFO("decimate: " << decimate.err);
+  REQUIRE(decimate.status == 0);
+  const RunResult eval = runTriwalk(directory, "eval --quiet" + data + " --selection " + selection.string() + " --json " + rows.string());
+  INFO("eval: " << eval.err);
+  REQUIRE(eval.status == 0);
+  std::vector<std::string> methods;
+  const nlohmann::json document = nlohmann::json::parse(testing::readTextFileOrEmpty(rows));
+  for (const nlohmann::json& row : document["rows"]) {
+    methods.push_back(row["method"].get<std::string>());
+    CHECK(row["probe_errors"].size() == 6);
+    CHECK(row["samples"].get<int>() >= 3);
+  }
+  CHECK(methods == std::vector<std::string>{"initial", "uniform", "edge_collapse", "kmedoids", "random"});
+  const RunResult render = runTriwalk(directory, "render" + data + " --selection " + selection.string() +
+                                                     " --frames 2 --size 96x64 --out " + (directory / "frames").string(), true);
+  INFO("render: " << render.err);
+  REQUIRE(render.status == 0);
+  CHECK(std::filesystem::exists(directory / "frames" / "frame_0000.png"));
+  CHECK(std::filesystem::exists(directory / "frames" / "frame_0001.png"));
+}
+
+TEST_CASE("import and export from the command line: a round trip, its report, and bad options in one line") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 3, 3, 32, 1);
+  const std::filesystem::path exported = directory / "realsee", imported = directory / "back";
+  REQUIRE(runTriwalk(directory, "export --quiet --dataset " + (directory / "data").string() + " --to realsee --out " +
+                                    exported.string()).status == 0);
+  CHECK(std::filesystem::exists(exported / "viewpoints" / "p0" / "extrinsics.txt"));
+  const RunResult run = runTriwalk(directory, "import --quiet --from realsee --in " + exported.string() + " --out " +
+                                                  imported.string() + " --probes-fraction 0.2 --seed 3");
+  INFO(run.err);
+  REQUIRE(run.status == 0);
+  CHECK(run.out.find("imported 8 samples and 2 probes of 32x16") != std::string::npos);
+  CHECK(run.out.find("0 views resampled upright") != std::string::npos);
+  const nlohmann::json manifest = nlohmann::json::parse(testing::readTextFileOrEmpty(imported / "manifest.json"));
+  CHECK(manifest["capture"]["imported"]["layout"] == "realsee");
+  CHECK(manifest["probes"].size() == 2);
+
+  for (const auto& [arguments, message] : std::vector<std::pair<std::string, std::string>>{
+           {"import --from matterport --in " + exported.string() + " --out x", "--from"},
+           {"import --from realsee --in " + (directory / "missing").string() + " --out x", "--in"},
+           {"import --from realsee --in " + exported.string() + " --out x --depth-scale -1", "--depth-scale"},
+           {"import --from realsee --in " + exported.string() + " --out x --depth-scale nan", "--depth-scale"},
+           {"import --from realsee --in " + exported.string() + " --out x --probes-fraction 1.5", "--probes-fraction"},
+           {"import --from realsee --in " + exported.string() + " --out x --up w", "--up"},
+           {"import --from pano3d --in " + exported.string() + " --out x", "no pose file"},
+           {"export --dataset " + (directory / "data").string() + " --to realsee --out " + exported.string(), "not empty"},
+       }) {
+    CAPTURE(arguments);
+    const RunResult bad = runTriwalk(directory, arguments);
+    CHECK(bad.status != 0);
+    CHECK(bad.err.find(message) != std::string::npos);
+    CHECK(std::count(bad.err.begin(), bad.err.end(), '\n') == 1);
+    CHECK_FALSE(std::filesystem::exists(directory / "x"));
+  }
+}
+
 }  // namespace triwalk

@@ -113,7 +113,7 @@ void registerEvalCommand(CLI::App& app) {
     const Arguments& a = *arguments;
     const Dataset dataset = Dataset::open(a.dataset);
     const Selection selection = readSelection(a.selection, dataset);
-    if (dataset.probeCount() == 0) throw InputError(dataset.manifestPath().string(), "eval needs probes (capture --probes N)");
+    if (dataset.probeCount() == 0) throw InputError(dataset.manifestPath().string(), "eval needs probes (capture --probes N, or import --probes-fraction F)");
     checkCounts(dataset, selection, a.counts);
     const TriangleErrorSettings settings = triangleErrorSettings(a.errors, dataset);
     InterruptScope interruptScope;

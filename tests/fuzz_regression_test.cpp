@@ -3,6 +3,7 @@
 // bad input is; any other exception fails.
 
 #include "core/geometry/walkable_region.h"
+#include "core/import/pose_table.h"
 #include "core/io/camera_path.h"
 #include "core/io/dataset.h"
 #include "core/io/exr_io.h"
@@ -36,6 +37,10 @@ TEST_CASE("inputs that crashed or hung a fuzzer are read or refused with a one-l
       {"exr", [](const std::filesystem::path& input) { readPanoramaExr(input); return input; }},
       {"selection", [&](const std::filesystem::path& input) { readSelection(input, dataset); return input; }},
       {"camera_path", [](const std::filesystem::path& input) { readCameraPath(input); return input; }},
+      {"pose_table", [](const std::filesystem::path& input) {
+         readPoseTable(input, PoseMatrix::WorldToCamera, UpAxis::PlusY);
+         return input;
+       }},
       {"region", [](const std::filesystem::path& input) {
          const WalkableRegion region = WalkableRegion::fromJson(readJsonFile(input), input.string());
          glm::dvec2 low, high;

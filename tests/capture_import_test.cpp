@@ -344,6 +344,11 @@ TEST_CASE("bad captures give one line naming the file, before any image is conve
     std::ofstream(in / "poses.csv") << "s0,0,0,1.5,0\ns1,4,zero,1.5,0\n";
     testing::requireInputError([&] { importFolder(in); }, "poses.csv:2", "'zero' is not a number");
   }
+  SUBCASE("a header where a pose should be") {
+    const std::filesystem::path in = freshCapture();
+    std::ofstream(in / "poses.csv") << "name,x,y,z,yaw_deg\nname,x,y,z,yaw_deg\n";
+    testing::requireInputError([&] { importFolder(in); }, "poses.csv:2", "'x' is not a number");
+  }
   SUBCASE("a pose matrix that is not a rotation") {
     const std::filesystem::path in = freshCapture();
     std::ofstream(in / "poses.csv") << "s0,2,0,0,0,0,1,0,0,0,0,1,1.5,0,0,0,1\n";

@@ -51,13 +51,16 @@ PoseTable readCsv(const std::filesystem::path& path, PoseMatrix matrixKind, UpAx
   std::stringstream text(readTextFile(path));
   PoseTable table;
   std::string line;
+  bool firstContent = true;
   for (int row = 1; std::getline(text, line); ++row) {
     const std::string content = trim(line.substr(0, line.find('#')));
     if (content.empty()) continue;
     const std::string subject = path.string() + ":" + std::to_string(row);
     const std::vector<std::string> fields = splitFields(content);
-    // A header row: its second field is a column name, not a number.
-    if (table.empty() && fields.size() > 1 && !parseNumber(fields[1])) continue;
+    // Only the first row may be a header: its second field is a column name, not a number.
+    const bool header = firstContent && fields.size() > 1 && !parseNumber(fields[1]);
+    firstContent = false;
+    if (header) continue;
     if (fields.size() != 5 && fields.size() != 17) {
       throw InputError(subject, std::to_string(fields.size()) +
                                     " fields; expected name,x,y,z,yaw_deg (5) or name and a 4x4 matrix (17)");

@@ -12,7 +12,6 @@
 
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <numbers>
 
@@ -40,11 +39,13 @@ glm::ivec2 checkViews(const std::vector<SourceView>& views, const std::vector<Vi
     if (color.x != 2 * color.y) {
       throw InputError(view.color.string(), "size " + sizeText(color) + " is not an equirectangular panorama (width = 2 x height)");
     }
-    if (depthFileSize(view.depth) != color) {
-      throw InputError(view.depth.path.string(), "size " + sizeText(depthFileSize(view.depth)) + " differs from its colour image's " + sizeText(color));
+    const glm::ivec2 depth = depthFileSize(view.depth);
+    if (depth != color) {
+      throw InputError(view.depth.path.string(), "size " + sizeText(depth) + " differs from its colour image's " + sizeText(color));
     }
-    if (!view.mask.empty() && imageFileSize(view.mask) != color) {
-      throw InputError(view.mask.string(), "size " + sizeText(imageFileSize(view.mask)) + " differs from its colour image's " + sizeText(color));
+    const glm::ivec2 mask = view.mask.empty() ? color : imageFileSize(view.mask);
+    if (mask != color) {
+      throw InputError(view.mask.string(), "size " + sizeText(mask) + " differs from its colour image's " + sizeText(color));
     }
     if (size == glm::ivec2(0)) {
       size = color;
@@ -87,6 +88,7 @@ struct ConvertedView {
   Panorama panorama;
   float yawDegrees = 0.0f;
   size_t invalidPixels = 0;
+  double tiltRadians = 0.0;
   bool resampled = false;
 };
 
@@ -109,19 +111,14 @@ ConvertedView convertView(const SourceView& view, const ViewPose& pose, const Im
   convertToDistance(depth.metres, options.depthKind);
   Panorama camera{std::move(color), std::move(depth.metres)};
   converted.yawDegrees = float(yawDegrees(pose));
-  if (tiltRadians(pose) <= negligibleTiltRadians(camera.width())) {
+  converted.tiltRadians = tiltRadians(pose);
+  if (converted.tiltRadians <= negligibleTiltRadians(camera.width())) {
     converted.panorama = std::move(camera);
   } else {
     converted.panorama = uprightPanorama(camera, pose.rotation, degreesToRadians(converted.yawDegrees));
     converted.resampled = true;
   }
   return converted;
-}
-
-std::string numberedFile(const char* format, int id) {
-  char name[64];
-  std::snprintf(name, sizeof name, format, id);
-  return name;
 }
 
 }  // namespace
@@ -150,7 +147,7 @@ ImportReport importCapture(const std::vector<SourceView>& views, const ImportOpt
     std::vector<ViewRecord>& records = isProbe[i] ? manifest.probes : manifest.samples;
     ViewRecord record;
     record.id = int(records.size());
-    record.file = numberedFile(isProbe[i] ? "probes/p%04d.exr" : "samples/s%04d.exr", record.id);
+    record.file = isProbe[i] ? probeFileName(record.id) : sampleFileName(record.id);
     record.position = glm::vec3(poses[i].position);
     records.push_back(record);
     names[isProbe[i] ? "probes" : "samples"].push_back(views[i].name);
@@ -158,8 +155,7 @@ ImportReport importCapture(const std::vector<SourceView>& views, const ImportOpt
   validateManifest(manifest, out.string());
 
   StagedDirectory staging(out, kManifestFileName);
-  std::filesystem::create_directories(staging.path() / "samples");
-  std::filesystem::create_directories(staging.path() / "probes");
+  createViewFolders(staging.path());
   ImportReport report;
   report.width = size.x;
   report.height = size.y;
@@ -181,7 +177,7 @@ ImportReport importCapture(const std::vector<SourceView>& views, const ImportOpt
       report.mostInvalidView = views[i].name;
     }
     report.resampledViews += converted.resampled;
-    report.largestTiltDegrees = std::max(report.largestTiltDegrees, tiltRadians(poses[i]) * 180.0 / std::numbers::pi);
+    report.largestTiltDegrees = std::max(report.largestTiltDegrees, converted.tiltRadians * 180.0 / std::numbers::pi);
     progress.advance();
   }
   progress.finish();

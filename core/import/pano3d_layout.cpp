@@ -24,11 +24,10 @@ public:
   void writeView(const ExportView& view) override {
     writeColorPng(out_ / (view.name + kColorTag + ".png"), view.panorama);
     writeDepthExr(out_ / (view.name + kDepthTag + ".exr"), view.panorama.distance);
-    poses_.push_back({{"name", view.name},
-                      {"matrix", {{view.pose.rotation[0][0], view.pose.rotation[1][0], view.pose.rotation[2][0], view.pose.position.x},
-                                  {view.pose.rotation[0][1], view.pose.rotation[1][1], view.pose.rotation[2][1], view.pose.position.y},
-                                  {view.pose.rotation[0][2], view.pose.rotation[1][2], view.pose.rotation[2][2], view.pose.position.z},
-                                  {0.0, 0.0, 0.0, 1.0}}}});
+    const std::vector<double> rowMajor = matrixRows(poseMatrix(view.pose));
+    nlohmann::json rows = nlohmann::json::array();
+    for (size_t row = 0; row < 4; ++row) rows.push_back(std::vector<double>(rowMajor.begin() + 4 * row, rowMajor.begin() + 4 * row + 4));
+    poses_.push_back({{"name", view.name}, {"matrix", rows}});
   }
 
   void finish() override { writeJsonFile(out_ / "poses.json", {{"views", poses_}}); }

@@ -156,4 +156,12 @@ glm::dmat4 matrixFromRows(const std::vector<double>& rowMajor) {
   return matrix;
 }
 
+std::vector<double> matrixRows(const glm::dmat4& matrix) {
+  std::vector<double> rowMajor;
+  for (int row = 0; row < 4; ++row) {
+    for (int column = 0; column < 4; ++column) rowMajor.push_back(matrix[column][row]);
+  }
+  return rowMajor;
+}
+
 }  // namespace triwalk

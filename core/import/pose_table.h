@@ -29,7 +29,8 @@ PoseTable readPoseTable(const std::filesystem::path& path, PoseMatrix matrixKind
 // throws unless there are exactly count, all finite.
 std::vector<double> readNumberFile(const std::filesystem::path& path, size_t count);
 
-// A 4x4 matrix from 16 numbers given row by row.
+// A 4x4 matrix from 16 numbers given row by row, and back.
 glm::dmat4 matrixFromRows(const std::vector<double>& rowMajor);
+std::vector<double> matrixRows(const glm::dmat4& matrix);
 
 }  // namespace triwalk

@@ -78,14 +78,12 @@ public:
     }
     writePng16(folder / "depth_image.png", depth);
     writeTextFileAtomically(folder / "depth_scale.txt", std::to_string(scale) + "\n");
-    const glm::dmat4 matrix = poseMatrix(view.pose);
+    const std::vector<double> rowMajor = matrixRows(poseMatrix(view.pose));
     std::string rows;
     char number[64];
-    for (int row = 0; row < 4; ++row) {
-      for (int column = 0; column < 4; ++column) {
-        std::snprintf(number, sizeof number, "%.9g%c", matrix[column][row], column == 3 ? '\n' : ' ');
-        rows += number;
-      }
+    for (size_t i = 0; i < rowMajor.size(); ++i) {
+      std::snprintf(number, sizeof number, "%.9g%c", rowMajor[i], i % 4 == 3 ? '\n' : ' ');
+      rows += number;
     }
     writeTextFileAtomically(folder / "extrinsics.txt", rows);
     ids_ += view.name + "\n";

@@ -7,6 +7,7 @@
 #include "core/support/errors.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -181,6 +182,26 @@ WalkableRegion Dataset::walkableRegion() const {
 
 EquirectProjection Dataset::projection(const ViewRecord& view) const {
   return {manifest_.width, manifest_.height, degreesToRadians(view.yawDegrees)};
+}
+
+namespace {
+
+std::string numberedFile(const char* format, int id) {
+  char name[64];
+  std::snprintf(name, sizeof name, format, id);
+  return name;
+}
+
+}  // namespace
+
+std::string sampleFileName(int id) { return numberedFile("samples/s%04d.exr", id); }
+std::string probeFileName(int id) { return numberedFile("probes/p%04d.exr", id); }
+
+void createViewFolders(const std::filesystem::path& directory) {
+  std::error_code error;
+  std::filesystem::create_directories(directory / "samples", error);
+  std::filesystem::create_directories(directory / "probes", error);
+  if (error) throw InputError(directory.string(), "cannot create directory: " + error.message());
 }
 
 void writeManifest(const std::filesystem::path& directory, const Manifest& manifest) {

@@ -92,6 +92,13 @@ private:
   Manifest manifest_;
 };
 
+// The file of sample or probe id in a data set triwalk writes
+// ("samples/s0007.exr", "probes/p0003.exr").
+std::string sampleFileName(int id);
+std::string probeFileName(int id);
+// Creates the samples/ and probes/ folders those files go in.
+void createViewFolders(const std::filesystem::path& directory);
+
 // Validates a manifest (also used before writing one).
 void validateManifest(const Manifest& manifest, const std::string& subject);
 

@@ -27,18 +27,17 @@ StagedDirectory::~StagedDirectory() {
 
 void StagedDirectory::commit() {
   std::error_code error;
-  if (std::filesystem::exists(destination_)) {
-    const std::filesystem::path old = destination_.string() + ".old-triwalk";
+  // An existing destination steps aside first and is removed only once the new folder is in place.
+  const std::filesystem::path old = destination_.string() + ".old-triwalk";
+  const bool replacing = std::filesystem::exists(destination_);
+  if (replacing) {
     std::filesystem::remove_all(old, error);
     std::filesystem::rename(destination_, old, error);
     if (error) throw InputError(destination_.string(), "cannot replace the existing folder: " + error.message());
-    std::filesystem::rename(staging_, destination_, error);
-    if (error) throw InputError(destination_.string(), "cannot move the new folder into place: " + error.message());
-    std::filesystem::remove_all(old, error);
-  } else {
-    std::filesystem::rename(staging_, destination_, error);
-    if (error) throw InputError(destination_.string(), "cannot move the new folder into place: " + error.message());
   }
+  std::filesystem::rename(staging_, destination_, error);
+  if (error) throw InputError(destination_.string(), "cannot move the new folder into place: " + error.message());
+  if (replacing) std::filesystem::remove_all(old, error);
   committed_ = true;
 }
 

@@ -15,12 +15,6 @@ namespace triwalk {
 
 namespace {
 
-std::string numberedFile(const char* format, int id) {
-  char name[64];
-  std::snprintf(name, sizeof name, format, id);
-  return name;
-}
-
 // Uniform float in [0, 1) from a 32-bit engine, the same on every platform
 // (std::uniform_real_distribution is not).
 float unitRandom(std::mt19937& engine) { return float(engine() >> 8) * (1.0f / 16777216.0f); }
@@ -62,7 +56,7 @@ void planRectangle(const CaptureOptions& options, CapturePlan& plan) {
       const glm::vec2 xy = pathsAlongY ? lower + glm::vec2(along, across) : lower + glm::vec2(across, along);
       ViewRecord sample;
       sample.id = int(plan.samples.size());
-      sample.file = numberedFile("samples/s%04d.exr", sample.id);
+      sample.file = sampleFileName(sample.id);
       sample.position = glm::vec3(xy, plan.eyeZ);
       sample.path = path;
       sample.step = step;
@@ -95,7 +89,7 @@ void planRegion(const CaptureOptions& options, const WalkableRegion& region, Cap
       if (!region.contains(xy)) continue;
       ViewRecord sample;
       sample.id = int(plan.samples.size());
-      sample.file = numberedFile("samples/s%04d.exr", sample.id);
+      sample.file = sampleFileName(sample.id);
       sample.position = glm::vec3(glm::vec2(xy), plan.eyeZ);
       sample.path = column;
       sample.step = row;
@@ -141,7 +135,7 @@ CapturePlan planCapture(const Scene& scene, const CaptureOptions& options) {
     if (onSample) continue;
     ViewRecord probe;
     probe.id = int(plan.probes.size());
-    probe.file = numberedFile("probes/p%04d.exr", probe.id);
+    probe.file = probeFileName(probe.id);
     probe.position = glm::vec3(xy, plan.eyeZ);
     plan.probes.push_back(probe);
   }
@@ -155,10 +149,7 @@ CaptureSummary captureDataset(const Scene& sceneWithDoors, const std::string& sc
   const Scene& scene = hasDoors && !options.closedDoors ? doorsOpen.emplace(withDoorsOpen(sceneWithDoors)) : sceneWithDoors;
   const CapturePlan plan = planCapture(scene, options);
   StagedDirectory staging(outDirectory, kManifestFileName);
-  std::error_code error;
-  std::filesystem::create_directories(staging.path() / "samples", error);
-  std::filesystem::create_directories(staging.path() / "probes", error);
-  if (error) throw InputError(staging.path().string(), "cannot create directory: " + error.message());
+  createViewFolders(staging.path());
 
   CaptureSummary summary;
   {

@@ -7,9 +7,18 @@
 #include "core/support/errors.h"
 #include "render/gl/gl_context.h"
 
+#include <malloc.h>
+
 #include <cstdio>
 
 int main(int argc, char** argv) {
+  // Decimation allocates and frees a few hundred kilobytes per warp, tens of
+  // thousands of times; glibc would serve each from fresh zeroed pages
+  // (mmap, then trimmed back), a quarter of the time in page faults
+  // (docs/BENCHMARKS.md, "Where the decimation's time goes"). Kept in the
+  // heap they are reused.
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
   CLI::App app{"triwalk: select reference panoramas by edge-collapse decimation and walk through them"};
   app.require_subcommand(1);
   triwalk::registerCaptureCommand(app);

@@ -246,7 +246,8 @@ TEST_CASE("decimation serves samples outside the mesh as eval does: the nearest 
 }
 
 TEST_CASE(
-    "a captured data set: decimation then refinement, the same with 1 and 2 threads, and through selection.json") {
+    "a captured data set: decimation then refinement, the same with 1 and 2 threads (grid and simplified source "
+    "meshes), and through selection.json") {
   testing::TemporaryDirectory directory;
   testing::writeAnalyticDataset(directory / "data", 5, 3, 64, 1);
   const Dataset dataset = Dataset::open(directory / "data");
@@ -254,8 +255,9 @@ TEST_CASE(
   const ViewMesh initial = ViewMesh::delaunay(positions, {}, "test");
   TriangleErrorSettings settings;
   settings.width = 64;
-  auto run = [&](int threads) {
+  auto run = [&](int threads, SourceMesh mesh) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+    settings.synthesis.warp.mesh = mesh;
     DatasetTriangleErrors errors(dataset, settings, true);
     DecimationOptions options;  // the default cost (served samples), with the paper's fixed boundary so that
     options.maxError = 0.0;     // the refinement has references on the boundary to move
@@ -269,19 +271,23 @@ TEST_CASE(
     log.insert(log.end(), refinement.moves.begin(), refinement.moves.end());
     return std::pair(log, refinement);
   };
-  const auto [one, refinedOne] = run(1);
-  const auto [two, refinedTwo] = run(2);
-  REQUIRE(!refinedOne.moves.empty());
-  REQUIRE(one.size() == 10 + refinedOne.moves.size());  // 15 samples collapsed to 5, then the moves
-  REQUIRE(two.size() == one.size());
-  for (size_t i = 0; i < one.size(); ++i) {
-    CHECK(one[i].kind == two[i].kind);
-    CHECK(one[i].placement == two[i].placement);
-    CHECK(one[i].cost == two[i].cost);
-    CHECK(one[i].added == two[i].added);
+  for (const SourceMesh mesh : {SourceMesh::Simplified, SourceMesh::Grid}) {
+    INFO(sourceMeshName(mesh) << " source mesh");
+    const auto [one, refinedOne] = run(1, mesh);
+    const auto [two, refinedTwo] = run(2, mesh);
+    REQUIRE(!refinedOne.moves.empty());
+    REQUIRE(one.size() == 10 + refinedOne.moves.size());  // 15 samples collapsed to 5, then the moves
+    REQUIRE(two.size() == one.size());
+    for (size_t i = 0; i < one.size(); ++i) {
+      CHECK(one[i].kind == two[i].kind);
+      CHECK(one[i].placement == two[i].placement);
+      CHECK(one[i].cost == two[i].cost);
+      CHECK(one[i].added == two[i].added);
+    }
+    CHECK(refinedOne.triangles == refinedTwo.triangles);
+    CHECK(refinedOne.objectiveAfter <= refinedOne.objectiveBefore);
   }
-  CHECK(refinedOne.triangles == refinedTwo.triangles);
-  CHECK(refinedOne.objectiveAfter <= refinedOne.objectiveBefore);
+  const auto [one, refinedOne] = run(1, SourceMesh::Grid);
 
   Selection selection;
   selection.method = "edge_collapse";

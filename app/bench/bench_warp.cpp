@@ -1,5 +1,7 @@
 #include "app/bench/bench_groups.h"
+#include "core/image/image_compare.h"
 #include "core/image/panorama_resample.h"
+#include "core/synthesis/hole_fill.h"
 #include "core/synthesis/reconstruction_error.h"
 #include "core/synthesis/view_synthesis.h"
 
@@ -47,48 +49,69 @@ std::string split(const WarpRun& run) {
 void benchWarp(BenchTable& table, const BenchViews& views, int decimationWidth) {
   const Panorama& panorama = views.panoramas[0];
   const double megapixels = double(panorama.color.pixelCount()) / 1e6;
-  const auto prepareStart = BenchClock::now();
-  const WarpSource source(panorama, views.positions[0], 0.0f, WarpOptions{});
-  const double prepareSeconds = secondsSince(prepareStart);
   const DestinationCamera destination = DestinationCamera::panorama(views.destination, 1024, 512);
-  const std::string size = "1024x512 -> 1024x512, builtin scene, " + std::to_string(source.keptTriangleCount()) +
-                           " triangles kept of " + std::to_string(source.triangleCount());
-
-  const WarpRun all = timeWarps(source, destination, 5);
-  table.add({"CPU warp, all threads (" + std::to_string(std::thread::hardware_concurrency()) + ")", size,
-             formatNumber(megapixels / all.seconds, 2) + " source Mpixel/s",
-             formatNumber(1000.0 * all.seconds, 1) + " ms per warp; " + split(all)});
-  {
+  Rgb8Image gridFrame;
+  for (const SourceMesh mesh : {SourceMesh::Grid, SourceMesh::Simplified}) {
+    WarpOptions options;
+    options.mesh = mesh;
+    const auto prepareStart = BenchClock::now();
+    const WarpSource source(panorama, views.positions[0], 0.0f, options);
+    const double prepareSeconds = secondsSince(prepareStart);
+    const std::string size = "1024x512 -> 1024x512, builtin scene, " + std::to_string(source.keptTriangleCount()) +
+                             (mesh == SourceMesh::Grid ? " triangles kept of " + std::to_string(source.triangleCount())
+                                                       : " triangles simplified at 0.25 px");
+    const std::string name = mesh == SourceMesh::Grid ? "CPU warp" : "CPU warp, simplified source mesh";
+    const WarpSource* pointers[] = {&source};
+    const Rgb8Image frame = displayImage(synthesizeView(pointers, destination, {.warp = options, .blend = {}, .holes = HoleMode::Mark}).blended, HoleMode::Mark);
+    std::string agreement;
+    if (mesh == SourceMesh::Grid) {
+      gridFrame = frame;
+    } else {
+      agreement = "; PSNR " + formatNumber(psnr(frame, gridFrame), 1) + " dB against the grid's warp";
+    }
+    const WarpRun all = timeWarps(source, destination, 5);
+    table.add({name + ", all threads (" + std::to_string(std::thread::hardware_concurrency()) + ")", size,
+               formatNumber(megapixels / all.seconds, 2) + " source Mpixel/s",
+               formatNumber(1000.0 * all.seconds, 1) + " ms per warp; " + split(all) + "; source preparation " +
+                   formatNumber(1000.0 * prepareSeconds, 1) + " ms" + agreement});
+    if (mesh != SourceMesh::Grid) continue;
     tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
     const WarpRun one = timeWarps(source, destination, 3);
-    table.add({"CPU warp, 1 thread", size, formatNumber(megapixels / one.seconds, 2) + " source Mpixel/s",
-               formatNumber(1000.0 * one.seconds, 1) + " ms per warp; " + split(one) + "; source preparation " +
-                   formatNumber(1000.0 * prepareSeconds, 1) + " ms (all threads)"});
+    table.add({name + ", 1 thread", size, formatNumber(megapixels / one.seconds, 2) + " source Mpixel/s",
+               formatNumber(1000.0 * one.seconds, 1) + " ms per warp; " + split(one)});
   }
 
   // Triangle errors as decimation computes them: three sources warped to
   // the destination, blended and compared, many errors in parallel.
   const int factor = panorama.width() / decimationWidth;
-  std::vector<std::unique_ptr<WarpSource>> small;
-  std::vector<const WarpSource*> pointers;
-  for (size_t i = 0; i < 3; ++i) {
-    small.push_back(std::make_unique<WarpSource>(downsamplePanorama(views.panoramas[i], factor), views.positions[i], 0.0f,
-                                                 WarpOptions{}));
-    pointers.push_back(small.back().get());
-  }
   const ColorImage truth = toDisplayColors(downsamplePanorama(views.destinationPanorama, factor).color);
   const DestinationCamera smallDestination = DestinationCamera::panorama(views.destination, decimationWidth, decimationWidth / 2);
-  const int errors = 64;
-  const auto errorStart = BenchClock::now();
-  tbb::parallel_for(0, errors, [&](int) {
-    const SynthesizedView view = synthesizeView(pointers, smallDestination, SynthesisOptions{});
-    reconstructionError(toDisplayColors(view.blended.color), view.blended.hole, truth, ErrorOptions{});
-  });
-  const double errorSeconds = secondsSince(errorStart);
-  table.add({"triangle errors (3 warps + blend + E), all threads",
-             std::to_string(decimationWidth) + "x" + std::to_string(decimationWidth / 2) + ", " + std::to_string(errors) +
-                 " errors",
-             formatNumber(errors / errorSeconds, 1) + " errors/s", "the unit of work of decimation"});
+  for (const SourceMesh mesh : {SourceMesh::Grid, SourceMesh::Simplified}) {
+    WarpOptions options;
+    options.mesh = mesh;
+    std::vector<std::unique_ptr<WarpSource>> small;
+    std::vector<const WarpSource*> pointers;
+    const auto prepareStart = BenchClock::now();
+    for (size_t i = 0; i < 3; ++i) {
+      small.push_back(std::make_unique<WarpSource>(downsamplePanorama(views.panoramas[i], factor), views.positions[i], 0.0f,
+                                                   options));
+      pointers.push_back(small.back().get());
+    }
+    const double prepareSeconds = secondsSince(prepareStart) / 3.0;
+    const int errors = 64;
+    const auto errorStart = BenchClock::now();
+    tbb::parallel_for(0, errors, [&](int) {
+      const SynthesizedView view = synthesizeView(pointers, smallDestination, SynthesisOptions{});
+      reconstructionError(toDisplayColors(view.blended.color), view.blended.hole, truth, ErrorOptions{});
+    });
+    const double errorSeconds = secondsSince(errorStart);
+    table.add({std::string("triangle errors (3 warps + blend + E), all threads, ") + sourceMeshName(mesh) + " source mesh",
+               std::to_string(decimationWidth) + "x" + std::to_string(decimationWidth / 2) + ", " + std::to_string(errors) +
+                   " errors",
+               formatNumber(errors / errorSeconds, 1) + " errors/s",
+               "the unit of work of decimation; source preparation " + formatNumber(1000.0 * prepareSeconds, 1) +
+                   " ms each"});
+  }
 }
 
 }  // namespace triwalk

@@ -48,6 +48,14 @@ void addQualityOptions(CLI::App& command, QualityArguments& arguments, HoleMode 
   addStretchOptions(command, arguments);
   command.add_flag("--point-warp", arguments.pointWarp, "The paper's literal point warp instead of the triangle mesh")
       ->group("Warp");
+  command.add_option("--source-mesh", arguments.sourceMesh,
+                     "Triangles each reference warps: simplified (its grid simplified within --mesh-tolerance, colours "
+                     "looked up along each ray) or grid (two per pixel quad, the exact reference)")
+      ->capture_default_str()->check(CLI::IsMember({"simplified", "grid"}))->group("Warp");
+  command.add_option("--mesh-tolerance", arguments.meshTolerancePixels,
+                     "simplified: how far the surface may move, in reference pixels (at the distance nearer than which "
+                     "5% of the reference's surface lies)")
+      ->capture_default_str()->check(CLI::Range(0.0f, 8.0f))->group("Warp");
   addBlendOptions(command, arguments);
   addHoleOption(command, arguments, holes,
                 "Holes after the blend: fill (the error sees the filled view, as a walker does), or mark / black "
@@ -66,6 +74,8 @@ SynthesisOptions synthesisOptions(const QualityArguments& arguments) {
   options.warp.stretchTest = parseStretchTest(arguments.stretchTest);
   options.warp.grazingAngleDegrees = arguments.grazingAngleDegrees;
   options.warp.maxDepthRatio = arguments.maxDepthRatio;
+  options.warp.mesh = parseSourceMesh(arguments.sourceMesh);
+  options.warp.meshTolerancePixels = arguments.meshTolerancePixels;
   options.blend.epsilon = arguments.epsilon;
   options.blend.minimumWeightDistance = arguments.minimumWeightDistance;
   options.blend.weights = parseBlendWeights(arguments.blendWeights);
@@ -83,7 +93,7 @@ ErrorOptions errorOptions(const QualityArguments& arguments) {
 }
 
 std::string describeQuality(const SynthesisOptions& synthesis, const ErrorOptions& error) {
-  char text[320];
+  char text[400];
   const WarpOptions& warp = synthesis.warp;
   char stretch[64];
   if (warp.stretchTest == StretchTest::GrazingAngle) {
@@ -93,10 +103,14 @@ std::string describeQuality(const SynthesisOptions& synthesis, const ErrorOption
   } else {
     std::snprintf(stretch, sizeof stretch, "no stretch test");
   }
+  char mesh[64] = "";
+  if (warp.mesh == SourceMesh::Simplified) {
+    std::snprintf(mesh, sizeof mesh, ", simplified %.2f px mesh", warp.meshTolerancePixels);
+  }
   std::snprintf(text, sizeof text,
-                "warp %s (%s); blend epsilon %.3f, r_min %.2f m, %s weights; holes %s; error E = %g R + %g B, delta "
+                "warp %s (%s%s); blend epsilon %.3f, r_min %.2f m, %s weights; holes %s; error E = %g R + %g B, delta "
                 "%g/255, %s pixel weighting",
-                warp.method == WarpMethod::Mesh ? "mesh" : "point", stretch, synthesis.blend.epsilon,
+                warp.method == WarpMethod::Mesh ? "mesh" : "point", stretch, mesh, synthesis.blend.epsilon,
                 synthesis.blend.minimumWeightDistance, blendWeightsName(synthesis.blend.weights),
                 synthesis.holes == HoleMode::Fill ? "filled" : "raw", error.alpha, error.beta, error.delta,
                 pixelWeightingName(error.weighting));

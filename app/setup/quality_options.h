@@ -16,6 +16,8 @@ struct QualityArguments {
   float grazingAngleDegrees = WarpOptions{}.grazingAngleDegrees;
   float maxDepthRatio = WarpOptions{}.maxDepthRatio;
   bool pointWarp = false;
+  std::string sourceMesh = sourceMeshName(SourceMesh::Grid);
+  float meshTolerancePixels = WarpOptions{}.meshTolerancePixels;
   float epsilon = BlendOptions{}.epsilon;
   float minimumWeightDistance = BlendOptions{}.minimumWeightDistance;
   std::string blendWeights = blendWeightsName(BlendOptions{}.weights);

@@ -1,6 +1,7 @@
 #include "core/synthesis/warp.h"
 
 #include "core/support/errors.h"
+#include "core/synthesis/mesh_simplification.h"
 #include "core/synthesis/warp_reliability.h"
 
 #include <tbb/blocked_range.h>
@@ -33,9 +34,21 @@ const char* stretchTestName(StretchTest test) {
   return "?";
 }
 
+SourceMesh parseSourceMesh(const std::string& name) {
+  if (name == "grid") return SourceMesh::Grid;
+  if (name == "simplified") return SourceMesh::Simplified;
+  throw InputError("--source-mesh", "unknown source mesh '" + name + "' (use simplified or grid)");
+}
+
+const char* sourceMeshName(SourceMesh mesh) { return mesh == SourceMesh::Grid ? "grid" : "simplified"; }
+
 // ---------------------------------------------------------------- source --
 
 void WarpSource::triangleVertices(uint32_t triangle, uint32_t vertices[3]) const {
+  if (mesh_ == SourceMesh::Simplified) {
+    for (int k = 0; k < 3; ++k) vertices[k] = triangles_[3 * size_t(triangle) + size_t(k)];
+    return;
+  }
   const uint32_t width = uint32_t(width_);
   const uint32_t quadTriangles = 2 * width * uint32_t(height_ - 1);
   const uint32_t pixels = width * uint32_t(height_);
@@ -62,9 +75,10 @@ void WarpSource::triangleVertices(uint32_t triangle, uint32_t vertices[3]) const
 }
 
 WarpSource::WarpSource(const Panorama& panorama, glm::vec3 position, float yawRadians, const WarpOptions& options)
-    : width_(panorama.width()), height_(panorama.height()), position_(position) {
+    : width_(panorama.width()), height_(panorama.height()), position_(position),
+      projection_{panorama.width(), panorama.height(), yawRadians} {
   TRIWALK_CHECK(width_ >= 2 && height_ >= 2, "panorama too small to warp");
-  const EquirectProjection projection{width_, height_, yawRadians};
+  const EquirectProjection& projection = projection_;
   const size_t pixels = size_t(width_) * size_t(height_);
   points_.resize(pixels + 2);
   infinite_.resize(pixels + 2);
@@ -146,6 +160,81 @@ WarpSource::WarpSource(const Panorama& panorama, glm::vec3 position, float yawRa
     orphan_[v[0]] = orphan_[v[1]] = orphan_[v[2]] = 0;
   }
   for (size_t i = 0; i < points_.size(); ++i) orphan_[i] &= uint8_t(!infinite_[i]);
+  pixelVertexCount_ = uint32_t(pixels);
+  if (options.mesh == SourceMesh::Simplified) simplify(panorama, options.meshTolerancePixels);
+}
+
+void WarpSource::simplify(const Panorama& panorama, float tolerancePixels) {
+  // Surfaces and sky apart: sky vertices are directions, not points, and
+  // no kept triangle joins the two.
+  std::vector<uint32_t> surface, sky;
+  for (uint32_t t = 0; t < uint32_t(kept_.size()); ++t) {
+    if (!kept_[t]) continue;
+    uint32_t v[3];
+    triangleVertices(t, v);
+    std::vector<uint32_t>& list = infinite_[v[0]] ? sky : surface;
+    list.insert(list.end(), v, v + 3);
+  }
+  // The bound in metres holds at the distance nearer than which 5% of the
+  // surface lies; nearer surfaces may move by a little more than the
+  // tolerance in pixels, farther ones by less.
+  std::vector<float> distances;
+  for (const float d : panorama.distance.pixels) {
+    if (std::isfinite(d)) distances.push_back(d);
+  }
+  const float pixelAngle = 2.0f * float(std::numbers::pi) / float(width_);
+  float nearDistance = 0.0f;
+  if (!distances.empty()) {
+    const auto nth = distances.begin() + std::ptrdiff_t(distances.size() / 20);
+    std::nth_element(distances.begin(), nth, distances.end());
+    nearDistance = *nth;
+  }
+  surface = simplifyTriangles(surface, points_, tolerancePixels * pixelAngle * nearDistance);
+  sky = simplifyTriangles(sky, points_, tolerancePixels * pixelAngle);
+
+  // Keep the vertices the triangles and the orphan splats use, pixels
+  // first in pixel order, then the poles.
+  const uint32_t pixels = uint32_t(width_) * uint32_t(height_);
+  std::vector<uint8_t> used(points_.size(), 0);
+  for (const uint32_t v : surface) used[v] = 1;
+  for (const uint32_t v : sky) used[v] = 1;
+  for (size_t v = 0; v < orphan_.size(); ++v) used[v] |= orphan_[v];
+  constexpr uint32_t kUnused = std::numeric_limits<uint32_t>::max();
+  std::vector<uint32_t> compact(points_.size(), kUnused);
+  std::vector<glm::vec3> points, colors;
+  std::vector<uint8_t> infinite, orphan;
+  for (uint32_t v = 0; v < uint32_t(points_.size()); ++v) {
+    if (!used[v]) continue;
+    compact[v] = uint32_t(points.size());
+    points.push_back(points_[v]);
+    colors.push_back(colors_[v]);
+    infinite.push_back(infinite_[v]);
+    orphan.push_back(orphan_[v]);
+  }
+  pixelVertexCount_ = uint32_t(std::count(used.begin(), used.begin() + pixels, uint8_t(1)));
+  triangles_.clear();
+  for (const std::vector<uint32_t>* list : {&surface, &sky}) {
+    for (const uint32_t v : *list) triangles_.push_back(compact[v]);
+  }
+  points_ = std::move(points);
+  colors_ = std::move(colors);
+  infinite_ = std::move(infinite);
+  orphan_ = std::move(orphan);
+  kept_.clear();
+  keptCount_ = uint32_t(triangles_.size() / 3);
+  mesh_ = SourceMesh::Simplified;
+  texture_ = panorama.color;
+}
+
+glm::vec3 WarpSource::colorAlong(glm::vec3 direction) const {
+  const glm::vec2 p = projection_.imagePoint(direction);
+  const float fx = p.x - 0.5f, fy = std::clamp(p.y - 0.5f, 0.0f, float(height_ - 1));
+  const int x0 = int(std::floor(fx)), y0 = int(fy);
+  const float tx = fx - float(x0), ty = fy - float(y0);
+  const int xa = (x0 % width_ + width_) % width_, xb = (xa + 1) % width_;
+  const int ya = y0, yb = std::min(y0 + 1, height_ - 1);
+  auto at = [&](int x, int y) { return texture_.pixels[size_t(y) * size_t(width_) + size_t(x)]; };
+  return (1.0f - ty) * ((1.0f - tx) * at(xa, ya) + tx * at(xb, ya)) + ty * ((1.0f - tx) * at(xa, yb) + tx * at(xb, yb));
 }
 
 DestinationCamera DestinationCamera::panorama(glm::vec3 position, int width, int height, float yawRadians) {
@@ -285,15 +374,22 @@ struct PixelRange {
 
 PixelRange sphericalRange(const ProjectedVertex* v[3], bool atInfinity, const DirectionTable& directions, int width,
                           int height) {
-  double xs[3], minY = 1e30, maxY = -1e30;
+  double minY = 1e30, maxY = -1e30;
   for (int i = 0; i < 3; ++i) {
-    xs[i] = v[i]->screen.x;
     minY = std::min(minY, double(v[i]->screen.y));
     maxY = std::max(maxY, double(v[i]->screen.y));
   }
-  if (std::max({xs[0], xs[1], xs[2]}) - std::min({xs[0], xs[1], xs[2]}) > 0.5 * width) {
-    for (double& x : xs) x += x < 0.5 * width ? width : 0.0;
-  }
+  // Longitudes unwrapped along the edges: an edge is an arc shorter than
+  // half a turn, so it takes the shorter way round unless it passes over a
+  // pole; then the steps add up to a whole turn instead of none. This holds
+  // for triangles of any size, not only the grid's pixel-sized ones.
+  const auto shortestStep = [width](double from, double to) {
+    const double step = std::fmod(to - from, double(width));
+    return step >= 0.5 * width ? step - width : step < -0.5 * width ? step + width : step;
+  };
+  double xs[3] = {v[0]->screen.x, 0.0, 0.0};
+  for (int i = 1; i < 3; ++i) xs[i] = xs[i - 1] + shortestStep(xs[i - 1], v[i]->screen.x);
+  const bool turnsAround = std::abs(xs[2] + shortestStep(xs[2], xs[0]) - xs[0]) > 0.5 * width;
   double minX = std::min({xs[0], xs[1], xs[2]}), maxX = std::max({xs[0], xs[1], xs[2]});
   // Great-circle edges bulge towards the poles between their vertices:
   // an edge spanning dtheta of longitude at latitude phi bulges by about
@@ -328,9 +424,9 @@ PixelRange sphericalRange(const ProjectedVertex* v[3], bool atInfinity, const Di
     }
   }
   const double margin = 0.01;
-  // Only a triangle whose vertices spread over more than half the
-  // longitudes can contain a pole.
-  if (maxX - minX > 0.5 * width) {
+  // Only a triangle whose edges turn around, or whose vertices spread over
+  // more than half the longitudes, can contain a pole.
+  if (turnsAround || maxX - minX > 0.5 * width) {
     const SphericalTriangle triangle(v, atInfinity);
     Coverage ignored;
     const bool north = triangle.covers({0.0, 0.0, 1.0}, ignored);
@@ -433,7 +529,8 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
   auto stageStart = Clock::now();
   const int width = destination.width(), height = destination.height();
   const bool equirect = destination.kind == DestinationCamera::Kind::Equirect;
-  const uint32_t vertexCount = uint32_t(source.width()) * uint32_t(source.height()) + 2;
+  TRIWALK_CHECK(equirect || source.mesh() == SourceMesh::Grid, "a simplified source warps to panoramas only");
+  const uint32_t vertexCount = source.vertexCount();
   std::vector<ProjectedVertex> projected(vertexCount);
   tbb::parallel_for(tbb::blocked_range<uint32_t>(0, vertexCount, 4096), [&](const tbb::blocked_range<uint32_t>& r) {
     for (uint32_t v = r.begin(); v != r.end(); ++v) projected[v] = projectVertex(source, v, destination);
@@ -445,7 +542,7 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
 
   std::vector<uint64_t> zBuffer(size_t(width) * size_t(height), kEmpty);
   std::atomic<uint64_t> rasterized{0};
-  const uint32_t pointCount = vertexCount - 2;
+  const uint32_t pointCount = source.pixelVertexCount();
 
   // Points: every pixel in the point warp; in the mesh warp, orphans
   // compete with the triangles and the other vertices only fill gaps.
@@ -530,13 +627,19 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
         const bool covered = equirect ? SphericalTriangle(v, source.atInfinity(indices[0])).covers(directions->at(x, y), coverage)
                                       : PlanarTriangle(v).covers(x, y, coverage);
         TRIWALK_CHECK(covered, "z-buffer winner does not cover its pixel");
-        glm::vec3 color(0.0f);
-        for (int k = 0; k < 3; ++k) color += float(coverage.weights[k]) * source.color(indices[k]);
-        layer.color.pixels[i] = color;
-        if (!source.atInfinity(indices[0])) {
-          const glm::vec3 a = source.point(indices[0]), b = source.point(indices[1]), c = source.point(indices[2]);
-          const glm::vec3 point = float(coverage.weights[0]) * a + float(coverage.weights[1]) * b +
-                                  float(coverage.weights[2]) * c;
+        const glm::vec3 a = source.point(indices[0]), b = source.point(indices[1]), c = source.point(indices[2]);
+        // The covered point (a direction at infinity).
+        const glm::vec3 point =
+            float(coverage.weights[0]) * a + float(coverage.weights[1]) * b + float(coverage.weights[2]) * c;
+        const bool atInfinity = source.atInfinity(indices[0]);
+        if (source.mesh() == SourceMesh::Simplified) {
+          layer.color.pixels[i] = source.colorAlong(atInfinity ? point : point - source.position());
+        } else {
+          glm::vec3 color(0.0f);
+          for (int k = 0; k < 3; ++k) color += float(coverage.weights[k]) * source.color(indices[k]);
+          layer.color.pixels[i] = color;
+        }
+        if (!atInfinity) {
           layer.reliability[i] = warpReliability(point, glm::cross(b - a, c - a), source.position(), destination.position);
         }
       }

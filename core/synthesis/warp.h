@@ -43,20 +43,35 @@ enum class StretchTest {
 
 enum class WarpMethod { Mesh, Point };
 
+// The triangles a source warps: its grid (two per pixel quad, the exact
+// reference) or the grid simplified within a bound (docs/DESIGN.md,
+// "Simplified source meshes"): far fewer triangles, the colour looked up in
+// the source panorama along the ray to each covered point, so texture
+// detail is kept wherever the geometry is. Panorama destinations only.
+enum class SourceMesh { Grid, Simplified };
+
 struct WarpOptions {
   WarpMethod method = WarpMethod::Mesh;
   StretchTest stretchTest = StretchTest::GrazingAngle;
   float grazingAngleDegrees = 4.0f;  // GrazingAngle: minimum angle between surface and source ray
   float maxDepthRatio = 1.15f;       // DepthRatio: maximum farthest / nearest distance
+  SourceMesh mesh = SourceMesh::Grid;
+  // Simplified: how far the surface may move, in source pixels at the
+  // distance nearer than which 5% of the surface lies.
+  float meshTolerancePixels = 0.25f;
 };
 
 // Parses "none", "grazing-angle", "depth-ratio"; throws InputError.
 StretchTest parseStretchTest(const std::string& name);
 const char* stretchTestName(StretchTest test);
+// Parses "grid" or "simplified"; throws InputError.
+SourceMesh parseSourceMesh(const std::string& name);
+const char* sourceMeshName(SourceMesh mesh);
 
 // A source panorama prepared for warping: world points of its pixels and
-// pole vertices, and which triangles survive the stretch test. Depends only
-// on the source, so decimation prepares each sample once.
+// pole vertices, and which triangles survive the stretch test (optionally
+// simplified). Depends only on the source, so decimation prepares each
+// sample once.
 class WarpSource {
 public:
   WarpSource(const Panorama& panorama, glm::vec3 position, float yawRadians, const WarpOptions& options);
@@ -64,29 +79,46 @@ public:
   int width() const { return width_; }
   int height() const { return height_; }
   glm::vec3 position() const { return position_; }
-  // Vertex i < W*H is pixel (i % W, i / W); W*H and W*H+1 are the poles.
+  SourceMesh mesh() const { return mesh_; }
+  // Grid: vertex i < W*H is pixel (i % W, i / W); W*H and W*H+1 are the
+  // poles. Simplified: the pixels the simplified triangles and the orphans
+  // use, in pixel order, then the poles they use. Vertices below
+  // pixelVertexCount() are pixels (splatted as points), the rest poles.
+  uint32_t vertexCount() const { return uint32_t(points_.size()); }
+  uint32_t pixelVertexCount() const { return pixelVertexCount_; }
   glm::vec3 point(uint32_t vertex) const { return points_[vertex]; }
   bool atInfinity(uint32_t vertex) const { return infinite_[vertex] != 0; }
   glm::vec3 color(uint32_t vertex) const { return colors_[vertex]; }
-  // Triangle ids: quads (v * W + u) * 2 + {0, 1} for v < H - 1, then the
-  // top fan (W triangles), then the bottom fan (W triangles).
-  uint32_t triangleCount() const { return uint32_t(kept_.size()); }
-  bool triangleKept(uint32_t triangle) const { return kept_[triangle] != 0; }
+  // Grid triangle ids: quads (v * W + u) * 2 + {0, 1} for v < H - 1, then
+  // the top fan (W triangles), then the bottom fan (W triangles); those the
+  // stretch test dropped are not kept. Simplified: a list, all kept.
+  uint32_t triangleCount() const { return mesh_ == SourceMesh::Grid ? uint32_t(kept_.size()) : keptCount_; }
+  bool triangleKept(uint32_t triangle) const { return mesh_ != SourceMesh::Grid || kept_[triangle] != 0; }
   void triangleVertices(uint32_t triangle, uint32_t vertices[3]) const;
   uint32_t keptTriangleCount() const { return keptCount_; }
-  // A finite vertex none of whose triangles was kept.
+  // A finite vertex none of whose grid triangles was kept.
   bool orphan(uint32_t vertex) const { return orphan_[vertex] != 0; }
+  // Simplified: the source's colour along a ray from its centre (bilinear,
+  // wrapping across the seam).
+  glm::vec3 colorAlong(glm::vec3 direction) const;
 
 private:
+  void simplify(const Panorama& panorama, float tolerancePixels);
+
   int width_ = 0;
   int height_ = 0;
   glm::vec3 position_{0.0f};
+  EquirectProjection projection_;
+  SourceMesh mesh_ = SourceMesh::Grid;
   std::vector<glm::vec3> points_;   // world point, or unit direction when at infinity
   std::vector<uint8_t> infinite_;
   std::vector<glm::vec3> colors_;   // linear
-  std::vector<uint8_t> kept_;
+  std::vector<uint8_t> kept_;       // grid: per triangle
+  std::vector<uint32_t> triangles_; // simplified: three vertices per triangle
   std::vector<uint8_t> orphan_;
+  uint32_t pixelVertexCount_ = 0;
   uint32_t keptCount_ = 0;
+  ColorImage texture_;              // simplified: the source's colours, for colorAlong
 };
 
 // A destination camera: an equirectangular panorama at a position, or a

@@ -32,8 +32,11 @@ PreparedPanorama preparePanorama(const Panorama& panorama, glm::vec3 position, f
   prepared.yaw = yawRadians;
   const int width = prepared.width, height = prepared.height;
   // The mesh decisions (stretch test, orphans, poles) come from the CPU
-  // reference itself, so both paths warp the same triangles.
-  const WarpSource source(panorama, position, yawRadians, options);
+  // reference itself, so both paths warp the same triangles: its grid,
+  // since the layer shader colours by vertex and tiles by pixel.
+  WarpOptions gridOptions = options;
+  gridOptions.mesh = SourceMesh::Grid;
+  const WarpSource source(panorama, position, yawRadians, gridOptions);
   const size_t pixels = size_t(width) * size_t(height);
 
   prepared.colorHalf.resize(pixels * 4);

@@ -85,6 +85,19 @@ CpuFrame cpuFrame(const std::vector<Reference>& references, const PinholeCamera&
   return {displayImage(view.blended, holes), view.fill.holesBefore};
 }
 
+// The built-in scene captured small (6 paths, no probes) into
+// directory/builtin, under the current GL context.
+Dataset captureSmallBuiltin(const std::filesystem::path& directory, int perPath, int width) {
+  CaptureOptions options;
+  options.paths = 6;
+  options.perPath = perPath;
+  options.width = width;
+  options.probes = 0;
+  options.quiet = true;
+  captureDataset(loadSceneDescription(builtinScenePath()), "builtin", options, directory / "builtin");
+  return Dataset::open(directory / "builtin");
+}
+
 }  // namespace
 
 TEST_CASE("GPU warp matches the CPU reference warp (PSNR >= 35 dB), through EGL and OSMesa alike") {
@@ -179,17 +192,8 @@ TEST_CASE("the walkthrough renderer draws the three references of the triangle a
 
 TEST_CASE("simplified source meshes warp the built-in scene like the exact grid (PSNR >= 35 dB) with far fewer triangles") {
   testing::TemporaryDirectory directory;
-  {
-    auto context = createHeadlessContext();
-    CaptureOptions options;
-    options.paths = 6;
-    options.perPath = 4;
-    options.width = 512;
-    options.probes = 0;
-    options.quiet = true;
-    captureDataset(loadSceneDescription(builtinScenePath()), "builtin", options, directory / "builtin");
-  }
-  const Dataset dataset = Dataset::open(directory / "builtin");
+  auto context = createHeadlessContext();
+  const Dataset dataset = captureSmallBuiltin(directory.path(), 4, 512);
   // Decimation's setting: references and destinations at 256x128.
   constexpr int kErrorWidth = 256;
   auto sourcesOf = [&](SourceMesh mesh) {
@@ -246,15 +250,7 @@ TEST_CASE("golden frames: the built-in scene captured small and walked through r
   // Regenerate with: TRIWALK_UPDATE_GOLDEN=1 build/release/tests/triwalk_render_tests -tc="golden*"
   testing::TemporaryDirectory directory;
   auto context = createHeadlessContext();
-  const Scene scene = loadSceneDescription(builtinScenePath());
-  CaptureOptions options;
-  options.paths = 6;
-  options.perPath = 3;
-  options.width = 256;
-  options.probes = 0;
-  options.quiet = true;
-  captureDataset(scene, "builtin", options, directory / "builtin");
-  const Dataset dataset = Dataset::open(directory / "builtin");
+  const Dataset dataset = captureSmallBuiltin(directory.path(), 3, 256);
   const ViewMesh mesh = ViewMesh::delaunay(samplePositions(dataset), {}, "golden");
   PanoramaCache cache(dataset, WarpOptions{}, size_t(256) << 20);
   WalkthroughRenderer renderer(mesh, cache, 320, 180);

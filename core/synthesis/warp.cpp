@@ -78,7 +78,6 @@ WarpSource::WarpSource(const Panorama& panorama, glm::vec3 position, float yawRa
     : width_(panorama.width()), height_(panorama.height()), position_(position),
       projection_{panorama.width(), panorama.height(), yawRadians} {
   TRIWALK_CHECK(width_ >= 2 && height_ >= 2, "panorama too small to warp");
-  const EquirectProjection& projection = projection_;
   const size_t pixels = size_t(width_) * size_t(height_);
   points_.resize(pixels + 2);
   infinite_.resize(pixels + 2);
@@ -87,7 +86,7 @@ WarpSource::WarpSource(const Panorama& panorama, glm::vec3 position, float yawRa
     for (int v = rows.begin(); v != rows.end(); ++v) {
       for (int u = 0; u < width_; ++u) {
         const size_t i = size_t(v) * size_t(width_) + size_t(u);
-        const glm::vec3 direction = projection.pixelDirection(u, v);
+        const glm::vec3 direction = projection_.pixelDirection(u, v);
         const float d = panorama.distance.pixels[i];
         infinite_[i] = std::isinf(d);
         points_[i] = std::isinf(d) ? direction : position + d * direction;

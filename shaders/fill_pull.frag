@@ -27,16 +27,12 @@ void main() {
   // nearer coarser texel weighs 3/4 along each axis.
   ivec2 base = ivec2(texel.x % 2 == 0 ? texel.x / 2 - 1 : texel.x / 2, texel.y % 2 == 0 ? texel.y / 2 - 1 : texel.y / 2);
   vec2 f = vec2(texel.x % 2 == 0 ? 0.75 : 0.25, texel.y % 2 == 0 ? 0.75 : 0.25);
-  vec4 parents[4];
-  float weights[4];
-  int count = 0;
-  for (int dy = 0; dy < 2; ++dy) {
-    for (int dx = 0; dx < 2; ++dx) {
-      ivec2 parent = clamp(base + ivec2(dx, dy), ivec2(0), coarseSize - 1);
-      parents[count] = texelFetch(coarser, topDown(parent, coarseSize), 0);
-      weights[count++] = (dx == 0 ? 1.0 - f.x : f.x) * (dy == 0 ? 1.0 - f.y : f.y);
-    }
-  }
-  outValue = farthestSurfaceMean(parents, weights, count, epsilon);
+  ivec2 last = coarseSize - 1;
+  vec4 parent00 = texelFetch(coarser, topDown(clamp(base, ivec2(0), last), coarseSize), 0);
+  vec4 parent10 = texelFetch(coarser, topDown(clamp(base + ivec2(1, 0), ivec2(0), last), coarseSize), 0);
+  vec4 parent01 = texelFetch(coarser, topDown(clamp(base + ivec2(0, 1), ivec2(0), last), coarseSize), 0);
+  vec4 parent11 = texelFetch(coarser, topDown(clamp(base + ivec2(1, 1), ivec2(0), last), coarseSize), 0);
+  vec4 weights = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
+  outValue = farthestSurfaceMean(parent00, parent10, parent01, parent11, weights, epsilon);
   outColor = outValue.a < 0.0 ? vec4(0.0, 0.0, 0.0, 1.0) : displayColor(outValue.rgb);
 }

@@ -7,18 +7,16 @@ uniform sampler2D finer;
 uniform float epsilon;
 out vec4 outValue;
 
+// A child past the finer level's edge (odd sizes) counts as unknown.
+vec4 child(ivec2 texel, ivec2 fineSize) {
+  if (texel.x >= fineSize.x || texel.y >= fineSize.y) return vec4(0.0, 0.0, 0.0, -1.0);
+  return texelFetch(finer, topDown(texel, fineSize), 0);
+}
+
 void main() {
   ivec2 fineSize = textureSize(finer, 0);
   ivec2 coarseSize = (fineSize + 1) / 2;
-  ivec2 texel = topDown(ivec2(gl_FragCoord.xy), coarseSize);
-  vec4 children[4];
-  float weights[4] = float[4](1.0, 1.0, 1.0, 1.0);
-  int count = 0;
-  for (int dy = 0; dy < 2; ++dy) {
-    for (int dx = 0; dx < 2; ++dx) {
-      ivec2 child = 2 * texel + ivec2(dx, dy);
-      if (child.x < fineSize.x && child.y < fineSize.y) children[count++] = texelFetch(finer, topDown(child, fineSize), 0);
-    }
-  }
-  outValue = farthestSurfaceMean(children, weights, count, epsilon);
+  ivec2 first = 2 * topDown(ivec2(gl_FragCoord.xy), coarseSize);
+  outValue = farthestSurfaceMean(child(first, fineSize), child(first + ivec2(1, 0), fineSize), child(first + ivec2(0, 1), fineSize),
+                                 child(first + ivec2(1, 1), fineSize), vec4(1.0), epsilon);
 }

@@ -8,19 +8,14 @@ ivec2 topDown(ivec2 texel, ivec2 size) { return ivec2(texel.x, size.y - 1 - texe
 
 // The weighted mean of the known candidates on the farthest surface
 // (inverse distance within (1 + epsilon) of the smallest); unknown if none.
-vec4 farthestSurfaceMean(vec4 candidates[4], float weights[4], int count, float epsilon) {
-  float nearestInverse = positiveInfinity();
-  for (int i = 0; i < count; ++i) {
-    if (candidates[i].a >= 0.0) nearestInverse = min(nearestInverse, candidates[i].a);
-  }
+// The four candidates are held as vector lanes, not an array indexed in a
+// loop: no per-candidate branches for llvmpipe's eight pixels in lockstep.
+vec4 farthestSurfaceMean(vec4 c0, vec4 c1, vec4 c2, vec4 c3, vec4 weights, float epsilon) {
+  vec4 inverse = vec4(c0.a, c1.a, c2.a, c3.a);
+  bvec4 known = greaterThanEqual(inverse, vec4(0.0));
+  vec4 knownInverse = mix(vec4(positiveInfinity()), inverse, known);
+  float nearestInverse = min(min(knownInverse.x, knownInverse.y), min(knownInverse.z, knownInverse.w));
   if (isinf(nearestInverse)) return vec4(0.0, 0.0, 0.0, -1.0);
-  float limit = nearestInverse * (1.0 + epsilon);
-  vec4 sum = vec4(0.0);
-  float weightSum = 0.0;
-  for (int i = 0; i < count; ++i) {
-    if (candidates[i].a < 0.0 || candidates[i].a > limit) continue;
-    sum += weights[i] * candidates[i];
-    weightSum += weights[i];
-  }
-  return sum / weightSum;
+  vec4 w = weights * vec4(lessThanEqual(knownInverse, vec4(nearestInverse * (1.0 + epsilon))));
+  return (w.x * c0 + w.y * c1 + w.z * c2 + w.w * c3) / (w.x + w.y + w.z + w.w);
 }

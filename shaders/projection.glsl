@@ -8,4 +8,11 @@ vec3 equirectDirection(vec2 imagePoint, vec2 size, float yaw) {
   return vec3(cos(phi) * cos(theta), cos(phi) * sin(theta), sin(phi));
 }
 
+// World direction -> continuous image point (x in [0, W) up to rounding).
+vec2 equirectImagePoint(vec3 direction, vec2 size, float yaw) {
+  float theta = atan(direction.y, direction.x) - yaw;
+  float phi = atan(direction.z, length(direction.xy));
+  return vec2(fract((theta + kPi) / (2.0 * kPi)) * size.x, (0.5 * kPi - phi) * size.y / kPi);
+}
+
 float positiveInfinity() { return uintBitsToFloat(0x7F800000u); }

@@ -7,8 +7,13 @@
 // normal is the cross product of the world point's screen derivatives,
 // exact for a planar triangle since all four pixels of a quad evaluate the
 // same triangle; a point (no triangle) has none and counts 1, as on the CPU.
+#include "projection.glsl"
 uniform vec3 sourcePosition;
 uniform vec3 cameraPosition;
+uniform bool explicitVertices;   // simplified mesh: colour along the source ray
+uniform sampler2D colorTexture;  // bilinear, wrapping in longitude
+uniform vec2 panoramaSizeF;
+uniform float panoramaYaw;
 in vec3 vertexColor;
 in float inverseDistance;
 in vec3 worldPoint;
@@ -28,7 +33,13 @@ float warpReliability(vec3 point, vec3 normal) {
 }
 
 void main() {
-  layer = vec4(vertexColor, inverseDistance);
+  vec3 color = vertexColor;
+  if (explicitVertices) {
+    vec2 imagePoint = equirectImagePoint(inverseDistance > 0.0 ? worldPoint - sourcePosition : worldPoint,
+                                         panoramaSizeF, panoramaYaw);
+    color = textureLod(colorTexture, imagePoint / panoramaSizeF, 0.0).rgb;
+  }
+  layer = vec4(color, inverseDistance);
   vec3 normal = cross(dFdx(worldPoint), dFdy(worldPoint));
   reliability = inverseDistance > 0.0 ? warpReliability(worldPoint, normal) : 1.0;
 }

@@ -2,7 +2,9 @@
 // One reference panorama as a grid mesh displaced by its distance texture
 // (the CPU reference warp's mesh, core/synthesis/warp.h): vertex i is pixel
 // (i mod W, i div W), W*H and W*H+1 are the poles; a vertex at infinity
-// (sky) is a direction, w = 0.
+// (sky) is a direction, w = 0. A simplified mesh gives its vertices
+// explicitly (vertexPoint, the same w convention) and its colour comes from
+// the fragment shader's lookup along the source ray.
 #include "projection.glsl"
 uniform sampler2D colorTexture;
 uniform sampler2D distanceTexture;
@@ -13,12 +15,21 @@ uniform vec2 poleDistances;
 uniform vec3 poleColors[2];
 uniform mat4 viewProjection;  // world -> clip, reversed depth, no far plane
 uniform vec3 cameraPosition;
+uniform bool explicitVertices;
+layout(location = 0) in vec4 vertexPoint;
 
 out vec3 vertexColor;
 out float inverseDistance;  // 1 / metres from the camera; 0 at infinity
 out vec3 worldPoint;        // the surface point, for the layer's reliability (a direction at infinity)
 
 void main() {
+  if (explicitVertices) {
+    vertexColor = vec3(0.0);
+    worldPoint = vertexPoint.xyz;
+    gl_Position = viewProjection * vertexPoint;
+    inverseDistance = vertexPoint.w == 0.0 ? 0.0 : 1.0 / length(vertexPoint.xyz - cameraPosition);
+    return;
+  }
   int pixels = panoramaSize.x * panoramaSize.y;
   vec3 direction;
   float distance;

@@ -8,58 +8,72 @@
 namespace triwalk {
 
 void benchRender(BenchTable& table, const BenchViews& views, int frames) {
-  std::vector<std::unique_ptr<GpuPanorama>> panoramas;
-  std::vector<const GpuPanorama*> references;
-  for (size_t i = 0; i < 3; ++i) {
-    panoramas.push_back(std::make_unique<GpuPanorama>(preparePanorama(views.panoramas[i], views.positions[i], 0.0f, WarpOptions{})));
-    references.push_back(panoramas.back().get());
-  }
   GpuWarper warper(1280, 720);
   PinholeCamera camera;  // 1280x720, 60 degrees vertical
   camera.position = views.destination;
   // A full turn: every direction of the references is in view once.
   const std::vector<CameraPose> poses = rotatePath(views.destination, frames);
-  auto renderAt = [&](const CameraPose& pose, HoleMode holes, bool timePasses) {
-    camera.yawDegrees = pose.yawDegrees;
-    GpuWarpSettings settings;
-    settings.holes = holes;
-    return warper.render(camera, references, settings, timePasses);
-  };
-  renderAt(poses[0], HoleMode::Fill, true);  // warm-up: shader compilation
-
   const std::string size = "1280x720, 60 deg vertical, 3 references 1024x512, " + std::to_string(frames) + " frames of a turn";
-  for (const HoleMode holes : {HoleMode::Fill, HoleMode::Mark}) {
-    std::vector<double> milliseconds;
-    size_t triangles = 0, drawnTiles = 0, culledTiles = 0;
-    for (const CameraPose& pose : poses) {
-      glFinish();
-      const auto start = BenchClock::now();
-      const GpuFrameStatistics statistics = renderAt(pose, holes, false);
-      glFinish();
-      milliseconds.push_back(1000.0 * secondsSince(start));
-      triangles += statistics.trianglesDrawn;
-      drawnTiles += statistics.tilesDrawn;
-      culledTiles += statistics.tilesCulled;
-    }
-    table.add({std::string("GPU warp frame time, holes ") + holeModeName(holes) + ", median / p95", size,
-               formatMedianAndP95(milliseconds),
-               formatNumber(double(triangles) / double(frames) / 1e6, 2) + " M triangles a frame after culling " +
-                   formatNumber(100.0 * double(culledTiles) / double(drawnTiles + culledTiles), 0) + "% of the tiles"});
-  }
 
-  std::array<double, 3> layers{};
-  double resolve = 0.0, fill = 0.0;
-  for (const CameraPose& pose : poses) {
-    const GpuFrameStatistics statistics = renderAt(pose, HoleMode::Fill, true);
-    for (size_t k = 0; k < 3; ++k) layers[k] += statistics.layerMilliseconds[k] / double(frames);
-    resolve += statistics.resolveMilliseconds / double(frames);
-    fill += statistics.fillMilliseconds / double(frames);
+  for (const SourceMesh mesh : {SourceMesh::Grid, SourceMesh::Simplified}) {
+    WarpOptions options;
+    options.mesh = mesh;
+    const std::string meshName = std::string(sourceMeshName(mesh)) + " meshes";
+    std::vector<std::unique_ptr<GpuPanorama>> panoramas;
+    std::vector<const GpuPanorama*> references;
+    double prepareSeconds = 0.0;
+    for (size_t i = 0; i < 3; ++i) {
+      const auto start = BenchClock::now();
+      const PreparedPanorama prepared = preparePanorama(views.panoramas[i], views.positions[i], 0.0f, options);
+      prepareSeconds += secondsSince(start) / 3.0;
+      panoramas.push_back(std::make_unique<GpuPanorama>(prepared));
+      references.push_back(panoramas.back().get());
+    }
+    table.add({"GPU panorama preparation (" + meshName + ", the viewer's loader thread)", "1024x512",
+               formatNumber(1000.0 * prepareSeconds, 0) + " ms",
+               "stretch test, tiles" + std::string(mesh == SourceMesh::Simplified ? ", simplification (0.25 px)" : "") +
+                   "; mean of the 3 references"});
+    auto renderAt = [&](const CameraPose& pose, HoleMode holes, bool timePasses) {
+      camera.yawDegrees = pose.yawDegrees;
+      GpuWarpSettings settings;
+      settings.holes = holes;
+      return warper.render(camera, references, settings, timePasses);
+    };
+    renderAt(poses[0], HoleMode::Fill, true);  // warm-up: shader compilation
+
+    for (const HoleMode holes : {HoleMode::Fill, HoleMode::Mark}) {
+      std::vector<double> milliseconds;
+      size_t triangles = 0, drawnTiles = 0, culledTiles = 0;
+      for (const CameraPose& pose : poses) {
+        glFinish();
+        const auto start = BenchClock::now();
+        const GpuFrameStatistics statistics = renderAt(pose, holes, false);
+        glFinish();
+        milliseconds.push_back(1000.0 * secondsSince(start));
+        triangles += statistics.trianglesDrawn;
+        drawnTiles += statistics.tilesDrawn;
+        culledTiles += statistics.tilesCulled;
+      }
+      table.add({std::string("GPU warp frame time, ") + meshName + ", holes " + holeModeName(holes) + ", median / p95", size,
+                 formatMedianAndP95(milliseconds),
+                 formatNumber(double(triangles) / double(frames) / 1e6, 2) + " M triangles a frame after culling " +
+                     formatNumber(100.0 * double(culledTiles) / double(drawnTiles + culledTiles), 0) + "% of the tiles"});
+    }
+
+    std::array<double, 3> layers{};
+    double resolve = 0.0, fill = 0.0;
+    for (const CameraPose& pose : poses) {
+      const GpuFrameStatistics statistics = renderAt(pose, HoleMode::Fill, true);
+      for (size_t k = 0; k < 3; ++k) layers[k] += statistics.layerMilliseconds[k] / double(frames);
+      resolve += statistics.resolveMilliseconds / double(frames);
+      fill += statistics.fillMilliseconds / double(frames);
+    }
+    table.add({"GPU warp passes, " + meshName + " (mean, glFinish after each)", size,
+               "layers " + formatNumber(layers[0], 1) + " + " + formatNumber(layers[1], 1) + " + " + formatNumber(layers[2], 1) +
+                   " ms, resolve " + formatNumber(resolve, 1) + " ms, hole fill " + formatNumber(fill, 1) + " ms",
+               "a layer: one reference's visible tiles drawn with a depth test; resolve: the epsilon blend, full screen; "
+               "hole fill: the push-pull passes over all pyramid levels"});
   }
-  table.add({"GPU warp passes (mean, glFinish after each)", size,
-             "layers " + formatNumber(layers[0], 1) + " + " + formatNumber(layers[1], 1) + " + " + formatNumber(layers[2], 1) +
-                 " ms, resolve " + formatNumber(resolve, 1) + " ms, hole fill " + formatNumber(fill, 1) + " ms",
-             "a layer: one reference's visible tiles drawn with a depth test; resolve: the epsilon blend, full screen; "
-             "hole fill: the push-pull passes over all pyramid levels"});
 }
 
 }  // namespace triwalk

@@ -1,6 +1,7 @@
 #include "app/bench/bench_groups.h"
 #include "app/setup/walkthrough_setup.h"
 #include "core/io/camera_path.h"
+#include "render/walkthrough/frame_scale.h"
 #include "render/walkthrough/walkthrough_renderer.h"
 
 #include <algorithm>
@@ -13,8 +14,6 @@ namespace triwalk {
 // blocks (a reference still loading is drawn without).
 void benchViewer(BenchTable& table, const Dataset& dataset, const std::string& selection, int frames) {
   const ViewMesh mesh = walkthroughMesh(dataset, selection);
-  PanoramaCache cache(dataset, WarpOptions{}, size_t(1) << 30);
-  WalkthroughRenderer renderer(mesh, cache, 1280, 720);
   glm::dvec2 lower(1e30), upper(-1e30);
   for (int v : mesh.vertices()) lower = glm::min(lower, mesh.position(v)), upper = glm::max(upper, mesh.position(v));
   const float eye = sampleEyeHeight(dataset);
@@ -22,32 +21,59 @@ void benchViewer(BenchTable& table, const Dataset& dataset, const std::string& s
   const float length = std::min(float(upper.x - lower.x), 1.2f * float(frames) / 30.0f);
   const std::vector<CameraPose> poses =
       translatePath({float(lower.x) + 0.1f, y, eye}, {float(lower.x) + 0.1f + length, y, eye}, frames, 30.0f);
+  const std::string size = "1280x720, " + std::to_string(frames) + " frames over " + formatNumber(length, 1) + " m, " +
+                           std::to_string(mesh.vertexCount()) + " references of " + std::to_string(dataset.manifest().width) +
+                           "x" + std::to_string(dataset.manifest().height);
 
-  std::vector<double> milliseconds;
-  int incomplete = 0;
-  PinholeCamera camera;
-  for (const CameraPose& pose : poses) {
-    camera.position = pose.position;
-    camera.yawDegrees = pose.yawDegrees;
-    glFinish();
-    const auto start = BenchClock::now();
-    const WalkthroughRenderer::Frame frame = renderer.render(camera, GpuWarpSettings{}, false);
-    glFinish();
-    const double elapsed = secondsSince(start);
-    milliseconds.push_back(1000.0 * elapsed);
-    incomplete += frame.available < 3;
-    // The walk advances at 30 frames a second at most, as a display would.
-    if (elapsed < 1.0 / 30.0) std::this_thread::sleep_for(std::chrono::duration<double>(1.0 / 30.0 - elapsed));
+  // The same walk, each time from an empty working set: with the exact
+  // grids and with simplified meshes, at full resolution and as the viewer
+  // walks by default (the scale that fits its frame budget,
+  // render/walkthrough/frame_scale.h).
+  for (const SourceMesh sourceMesh : {SourceMesh::Grid, SourceMesh::Simplified}) {
+  for (const bool holdBudget : {false, true}) {
+    WarpOptions warpOptions;
+    warpOptions.mesh = sourceMesh;
+    const std::string meshName = std::string(sourceMeshName(sourceMesh)) + " meshes, ";
+    PanoramaCache cache(dataset, warpOptions, size_t(1) << 30);
+    WalkthroughRenderer renderer(mesh, cache, 1280, 720);
+    FrameScaleController frameScale(kWalkFrameBudgetMilliseconds, kMinimumWalkingScale);
+    std::vector<double> milliseconds;
+    double scaleSum = 0.0;
+    int incomplete = 0;
+    for (const CameraPose& pose : poses) {
+      const float scale = holdBudget ? frameScale.movingScale(1.0f) : 1.0f;
+      PinholeCamera camera;
+      camera.width = int(1280.0f * scale);
+      camera.height = int(720.0f * scale);
+      camera.position = pose.position;
+      camera.yawDegrees = pose.yawDegrees;
+      glFinish();
+      const auto start = BenchClock::now();
+      const WalkthroughRenderer::Frame frame = renderer.render(camera, GpuWarpSettings{}, false);
+      glFinish();
+      const double elapsed = secondsSince(start);
+      if (frame.available == 3) frameScale.record(scale, 1000.0 * elapsed);
+      milliseconds.push_back(1000.0 * elapsed);
+      scaleSum += scale;
+      incomplete += frame.available < 3;
+      // The walk advances at 30 frames a second at most, as a display would.
+      if (elapsed < 1.0 / 30.0) std::this_thread::sleep_for(std::chrono::duration<double>(1.0 / 30.0 - elapsed));
+    }
+    const PanoramaCache::Statistics statistics = cache.statistics();
+    const std::string loading = std::to_string(incomplete) + " frames drawn with a reference still loading; working set " +
+                                std::to_string(statistics.misses) + " misses, " + std::to_string(statistics.hits) + " hits";
+    if (holdBudget) {
+      table.add({"viewer frame time walking, " + meshName + "frame budget " + formatNumber(kWalkFrameBudgetMilliseconds, 0) +
+                     " ms (the viewer's default), median / p95",
+                 size, formatMedianAndP95(milliseconds),
+                 "mean scale " + formatNumber(scaleSum / double(poses.size()), 2) +
+                     " of each side while walking (full once the walker stops); " + loading});
+    } else {
+      table.add({"viewer frame time walking, " + meshName + "full resolution, median / p95", size, formatMedianAndP95(milliseconds),
+                 "frames never wait for the disk: " + loading});
+    }
   }
-  const PanoramaCache::Statistics statistics = cache.statistics();
-  table.add({"viewer frame time walking, median / p95",
-             "1280x720, " + std::to_string(frames) + " frames over " + formatNumber(length, 1) + " m, " +
-                 std::to_string(mesh.vertexCount()) + " references of " + std::to_string(dataset.manifest().width) + "x" +
-                 std::to_string(dataset.manifest().height),
-             formatMedianAndP95(milliseconds),
-             "frames never wait for the disk: " + std::to_string(incomplete) + " of them drawn with a reference still loading "
-                 "(the first ones, and where the walk outran the loader); working set " + std::to_string(statistics.misses) +
-                 " misses, " + std::to_string(statistics.hits) + " hits"});
+  }
 }
 
 }  // namespace triwalk

@@ -28,7 +28,9 @@ namespace triwalk {
 namespace {
 
 // The CPU reference of a frame (filled, marked or black as the GPU's), in
-// display bytes.
+// display bytes. It warps the exact grids whatever --source-mesh says: the
+// CPU warp simplifies for panorama destinations only, and --compare is
+// there to show what the GPU's choice costs.
 Rgb8Image cpuReference(const Dataset& dataset, const std::array<int, 3>& references, const PinholeCamera& camera,
                        const SynthesisOptions& synthesis, std::map<int, std::unique_ptr<WarpSource>>& sources) {
   std::vector<const WarpSource*> pointers;
@@ -36,8 +38,9 @@ Rgb8Image cpuReference(const Dataset& dataset, const std::array<int, 3>& referen
     auto& source = sources[sample];
     if (!source) {
       const ViewRecord& view = dataset.sample(sample);
-      source = std::make_unique<WarpSource>(dataset.loadView(view), view.position, degreesToRadians(view.yawDegrees),
-                                            synthesis.warp);
+      WarpOptions exact = synthesis.warp;
+      exact.mesh = SourceMesh::Grid;
+      source = std::make_unique<WarpSource>(dataset.loadView(view), view.position, degreesToRadians(view.yawDegrees), exact);
     }
     pointers.push_back(source.get());
   }

@@ -18,6 +18,17 @@ void addStretchOptions(CLI::App& command, QualityArguments& arguments) {
       ->capture_default_str()->check(CLI::Range(1.0f, 1000.0f))->group("Warp");
 }
 
+void addSourceMeshOptions(CLI::App& command, QualityArguments& arguments) {
+  command.add_option("--source-mesh", arguments.sourceMesh,
+                     "Triangles each reference warps: simplified (its grid simplified within --mesh-tolerance, colours "
+                     "looked up along each ray) or grid (two per pixel quad, the exact reference)")
+      ->capture_default_str()->check(CLI::IsMember({"simplified", "grid"}))->group("Warp");
+  command.add_option("--mesh-tolerance", arguments.meshTolerancePixels,
+                     "simplified: how far the surface may move, in reference pixels (at the distance nearer than which "
+                     "5% of the reference's surface lies)")
+      ->capture_default_str()->check(CLI::Range(0.0f, 8.0f))->group("Warp");
+}
+
 void addHoleOption(CLI::App& command, QualityArguments& arguments, HoleMode holes, const char* help) {
   arguments.holes = holeModeName(holes);
   command.add_option("--holes", arguments.holes, help)
@@ -39,6 +50,7 @@ void addBlendOptions(CLI::App& command, QualityArguments& arguments) {
 
 void addRenderQualityOptions(CLI::App& command, QualityArguments& arguments) {
   addStretchOptions(command, arguments);
+  addSourceMeshOptions(command, arguments);
   addBlendOptions(command, arguments);
   addHoleOption(command, arguments, HoleMode::Fill,
                 "Holes after the blend: fill (push-pull from the background), mark (magenta) or black");
@@ -48,14 +60,7 @@ void addQualityOptions(CLI::App& command, QualityArguments& arguments, HoleMode 
   addStretchOptions(command, arguments);
   command.add_flag("--point-warp", arguments.pointWarp, "The paper's literal point warp instead of the triangle mesh")
       ->group("Warp");
-  command.add_option("--source-mesh", arguments.sourceMesh,
-                     "Triangles each reference warps: simplified (its grid simplified within --mesh-tolerance, colours "
-                     "looked up along each ray) or grid (two per pixel quad, the exact reference)")
-      ->capture_default_str()->check(CLI::IsMember({"simplified", "grid"}))->group("Warp");
-  command.add_option("--mesh-tolerance", arguments.meshTolerancePixels,
-                     "simplified: how far the surface may move, in reference pixels (at the distance nearer than which "
-                     "5% of the reference's surface lies)")
-      ->capture_default_str()->check(CLI::Range(0.0f, 8.0f))->group("Warp");
+  addSourceMeshOptions(command, arguments);
   addBlendOptions(command, arguments);
   addHoleOption(command, arguments, holes,
                 "Holes after the blend: fill (the error sees the filled view, as a walker does), or mark / black "

@@ -44,6 +44,12 @@ void drawRenderPanel(ViewerState& state) {
   ImGui::Checkbox("show references (red, green, blue)", &state.warp.showSources);
   ImGui::SliderFloat("field of view", &state.verticalFovDegrees, 30.0f, 110.0f, "%.0f deg");
   ImGui::SliderFloat("render scale", &state.renderScale, 0.25f, 1.0f, "%.2f");
+  ImGui::Checkbox("while walking, fit the frame in", &state.holdFrameBudget);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(120.0f);
+  ImGui::SliderFloat("ms", &state.frameBudgetMilliseconds, 10.0f, 200.0f, "%.0f");
+  ImGui::Text("on screen: %.2f of each side%s", state.currentScale,
+              state.currentScale < state.renderScale ? " (walking; full once you stop)" : "");
   ImGui::SliderFloat("walking speed", &state.walk.speed, 0.1f, 5.0f, "%.1f m/s");
   ImGui::Text("position (%.2f, %.2f)  yaw %.0f  pitch %.0f", state.walk.position.x, state.walk.position.y, state.walk.yawDegrees,
               state.walk.pitchDegrees);

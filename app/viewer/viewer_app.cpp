@@ -9,6 +9,7 @@
 #include "core/io/png_io.h"
 #include "core/selection/selection.h"
 #include "render/gl/glfw_window_context.h"
+#include "render/walkthrough/frame_scale.h"
 #include "render/walkthrough/walkthrough_renderer.h"
 
 #define GLFW_INCLUDE_NONE
@@ -58,9 +59,11 @@ public:
     TriangleErrorSettings errorSettings;
     errorSettings.width = errorWidthFor(dataset_, options.errorWidth);
     errorSettings.synthesis = options.synthesis;
-    // --holes chooses what the walker sees; live decimation measures its
-    // errors as decimate does by default, so its steps match the command's.
+    // --holes and --source-mesh choose what the walker sees; live
+    // decimation measures its errors as decimate does by default, so its
+    // steps match the command's.
     errorSettings.synthesis.holes = kDefaultErrorHoles;
+    errorSettings.synthesis.warp.mesh = WarpOptions{}.mesh;
     session_ = std::make_unique<DecimationSession>(dataset_, errorSettings, DecimationOptions{}, selection);
     state_.dataset = &dataset_;
     state_.session = session_.get();
@@ -158,6 +161,7 @@ private:
       if (meshChanged) {
         state_.mesh = datasetTriangles(dataset_, snapshot.triangles);
         renderer_->setMesh(state_.mesh);
+        ++meshVersion_;
         state_.selectedTriangle = -1;
         state_.inspection.reset();
       }
@@ -177,32 +181,59 @@ private:
       renderer_.reset();
       cache_ = std::make_unique<PanoramaCache>(dataset_, warpOptions_, options_.cacheBytes);
       renderer_ = std::make_unique<WalkthroughRenderer>(state_.mesh, *cache_, options_.width, options_.height);
+      ++meshVersion_;
     }
   }
 
-  void renderWalkthrough(bool wait) {
+  // While anything changes (the walk, a setting), frames fit the budget;
+  // once nothing does, one frame at the full render scale, then that frame
+  // stays on screen without drawing it again.
+  void renderWalkthrough(bool finalFrame) {
     int width = 0, height = 0;
     context_.framebufferSize(width, height);
     if (width <= 0 || height <= 0) return;
     PinholeCamera camera;
-    camera.width = std::max(16, int(float(width) * state_.renderScale));
-    camera.height = std::max(16, int(float(height) * state_.renderScale));
     camera.verticalFovDegrees = state_.verticalFovDegrees;
     camera.position = state_.walk.position;
     camera.yawDegrees = state_.walk.yawDegrees;
     camera.pitchDegrees = state_.walk.pitchDegrees;
-    const WalkthroughRenderer::Frame frame = renderer_->render(camera, state_.warp, wait);
-    state_.currentTriangle = frame.triangle;
-    state_.references = frame.references;
-    state_.referencesAvailable = frame.available;
-    state_.frame = frame.statistics;
-    state_.cache = cache_->statistics();
+    const auto sized = [&](float scale) {
+      PinholeCamera scaled = camera;
+      scaled.width = std::max(16, int(float(width) * scale));
+      scaled.height = std::max(16, int(float(height) * scale));
+      return scaled;
+    };
+    const PinholeCamera full = sized(state_.renderScale);
+    const bool changed = !(lastPose_ && lastPose_->camera == full && lastPose_->settings == state_.warp &&
+                           lastPose_->meshVersion == meshVersion_);
+    const bool settled = !changed && state_.referencesAvailable >= 3 && state_.currentScale >= state_.renderScale;
+    if (!settled) {
+      frameScale_.setBudgetMilliseconds(state_.frameBudgetMilliseconds);
+      const float scale = changed && state_.holdFrameBudget && !finalFrame ? frameScale_.movingScale(state_.renderScale)
+                                                                           : state_.renderScale;
+      camera = sized(scale);
+      glFinish();
+      const auto start = std::chrono::steady_clock::now();
+      const WalkthroughRenderer::Frame frame = renderer_->render(camera, state_.warp, finalFrame);
+      glFinish();
+      // Frames with a reference still loading draw fewer layers: not a measure of the warp.
+      if (frame.available == 3) {
+        frameScale_.record(scale, 1000.0 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      }
+      state_.currentScale = scale;
+      lastPose_ = RenderedPose{full, state_.warp, meshVersion_};
+      state_.currentTriangle = frame.triangle;
+      state_.references = frame.references;
+      state_.referencesAvailable = frame.available;
+      state_.frame = frame.statistics;
+      state_.cache = cache_->statistics();
+    }
 
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, width, height);
     glClearColor(0.08f, 0.08f, 0.1f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    if (frame.available > 0) {
+    if (state_.referencesAvailable > 0) {
       const GpuWarper& warper = renderer_->warper();
       glBlitNamedFramebuffer(warper.outputFramebuffer(), 0, 0, 0, warper.width(), warper.height(), 0, 0, width, height,
                              GL_COLOR_BUFFER_BIT, GL_LINEAR);
@@ -240,6 +271,15 @@ private:
   std::unique_ptr<WalkthroughRenderer> renderer_;
   ViewerState state_;
   WalkController walk_;
+  FrameScaleController frameScale_{kWalkFrameBudgetMilliseconds, kMinimumWalkingScale};
+  // What the frame on screen shows: the camera at the full render scale.
+  struct RenderedPose {
+    PinholeCamera camera;
+    GpuWarpSettings settings;
+    uint64_t meshVersion = 0;
+  };
+  std::optional<RenderedPose> lastPose_;
+  uint64_t meshVersion_ = 0;  // the walkthrough's mesh or its panoramas changed
   int screenshots_ = 0;
 };
 

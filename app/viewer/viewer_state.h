@@ -6,6 +6,7 @@
 #include "app/viewer/gl_image.h"
 #include "app/viewer/walk_controller.h"
 #include "core/geometry/view_mesh.h"
+#include "render/walkthrough/frame_scale.h"
 #include "render/walkthrough/gpu_warper.h"
 #include "render/walkthrough/panorama_cache.h"
 
@@ -23,7 +24,12 @@ struct ViewerState {
 
   WalkState walk;
   float verticalFovDegrees = 60.0f;
-  float renderScale = 1.0f;  // share of the window's pixels the warp renders
+  float renderScale = 1.0f;  // share of each side of the window the warp renders, at most
+  // While the camera moves, fewer pixels so that the warp fits the budget
+  // (render/walkthrough/frame_scale.h); full resolution once it stops.
+  bool holdFrameBudget = true;
+  float frameBudgetMilliseconds = float(kWalkFrameBudgetMilliseconds);
+  float currentScale = 1.0f;  // of the frame on screen
   GpuWarpSettings warp;
   float grazingAngleDegrees = WarpOptions{}.grazingAngleDegrees;
   bool stretchChanged = false;  // apply: reload panoramas with the new stretch test

@@ -63,6 +63,8 @@ struct PinholeCamera {
   float yawDegrees = 0.0f;
   float pitchDegrees = 0.0f;
 
+  bool operator==(const PinholeCamera&) const = default;
+
   glm::vec3 forward() const {
     const float yaw = degreesToRadians(yawDegrees);
     const float pitch = degreesToRadians(pitchDegrees);

@@ -34,6 +34,8 @@ struct BlendOptions {
   float epsilon = 0.05f;               // relative depth interval around z_front
   float minimumWeightDistance = 0.1f;  // r_min, metres
   BlendWeights weights = BlendWeights::Reliability;
+
+  bool operator==(const BlendOptions&) const = default;
 };
 
 struct BlendedView {

@@ -57,6 +57,7 @@
   X(PFNGLVERTEXARRAYVERTEXBUFFERPROC, glVertexArrayVertexBuffer)          \
   X(PFNGLVERTEXARRAYELEMENTBUFFERPROC, glVertexArrayElementBuffer)        \
   X(PFNGLENABLEVERTEXARRAYATTRIBPROC, glEnableVertexArrayAttrib)          \
+  X(PFNGLDISABLEVERTEXARRAYATTRIBPROC, glDisableVertexArrayAttrib)        \
   X(PFNGLVERTEXARRAYATTRIBFORMATPROC, glVertexArrayAttribFormat)          \
   X(PFNGLVERTEXARRAYATTRIBBINDINGPROC, glVertexArrayAttribBinding)        \
   X(PFNGLCREATEFRAMEBUFFERSPROC, glCreateFramebuffers)                    \

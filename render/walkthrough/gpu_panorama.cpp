@@ -20,7 +20,7 @@ void grow(glm::vec3& lower, glm::vec3& upper, bool& any, glm::vec3 p) {
 }  // namespace
 
 size_t PreparedPanorama::bytes() const {
-  return colorHalf.size() * sizeof(uint16_t) + distance.size() * sizeof(float) +
+  return colorHalf.size() * sizeof(uint16_t) + distance.size() * sizeof(float) + vertices.size() * sizeof(glm::vec4) +
          (triangleIndices.size() + orphanIndices.size()) * sizeof(uint32_t);
 }
 
@@ -31,12 +31,10 @@ PreparedPanorama preparePanorama(const Panorama& panorama, glm::vec3 position, f
   prepared.position = position;
   prepared.yaw = yawRadians;
   const int width = prepared.width, height = prepared.height;
-  // The mesh decisions (stretch test, orphans, poles) come from the CPU
-  // reference itself, so both paths warp the same triangles: its grid,
-  // since the layer shader colours by vertex and tiles by pixel.
-  WarpOptions gridOptions = options;
-  gridOptions.mesh = SourceMesh::Grid;
-  const WarpSource source(panorama, position, yawRadians, gridOptions);
+  // The mesh decisions (stretch test, orphans, poles, simplification) come
+  // from the CPU reference itself, so both paths warp the same triangles.
+  const WarpSource source(panorama, position, yawRadians, options);
+  const bool simplified = source.mesh() == SourceMesh::Simplified;
   const size_t pixels = size_t(width) * size_t(height);
 
   prepared.colorHalf.resize(pixels * 4);
@@ -48,29 +46,36 @@ PreparedPanorama preparePanorama(const Panorama& panorama, glm::vec3 position, f
     prepared.colorHalf[4 * i + 3] = glm::packHalf1x16(1.0f);
   }
   prepared.distance = panorama.distance.pixels;
-  for (int pole = 0; pole < 2; ++pole) {
+  for (int pole = 0; pole < 2 && !simplified; ++pole) {
     const uint32_t vertex = uint32_t(pixels) + uint32_t(pole);
     prepared.poleColors[pole] = source.color(vertex);
     prepared.poleDistances[pole] = source.atInfinity(vertex) ? std::numeric_limits<float>::infinity()
                                                              : glm::length(source.point(vertex) - position);
   }
 
-  // Kept triangles by tile: quads by their top-left pixel, then one tile
-  // for each pole fan.
+  // Kept triangles by tile: grid quads by their top-left pixel, simplified
+  // triangles by their centroid's; then one tile for each pole fan.
   const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height - 1 + kTileSize - 1) / kTileSize;
   std::vector<std::vector<uint32_t>> tileIndices(size_t(tilesX * tilesY + 2));
   const uint32_t quadTriangles = 2 * uint32_t(width) * uint32_t(height - 1);
+  const EquirectProjection projection{width, height, yawRadians};
+  const auto direction = [&](uint32_t vertex) {
+    return source.atInfinity(vertex) ? source.point(vertex) : glm::normalize(source.point(vertex) - position);
+  };
   for (uint32_t t = 0; t < source.triangleCount(); ++t) {
     if (!source.triangleKept(t)) continue;
+    uint32_t v[3];
+    source.triangleVertices(t, v);
     size_t tile;
-    if (t < quadTriangles) {
+    if (simplified) {
+      const glm::vec2 p = projection.imagePoint(direction(v[0]) + direction(v[1]) + direction(v[2]));
+      tile = size_t(std::min(int(p.y), height - 2) / kTileSize * tilesX + std::min(int(p.x), width - 1) / kTileSize);
+    } else if (t < quadTriangles) {
       const uint32_t quad = t / 2;
       tile = size_t(int(quad / uint32_t(width)) / kTileSize * tilesX + int(quad % uint32_t(width)) / kTileSize);
     } else {
       tile = size_t(tilesX * tilesY) + ((t - quadTriangles) < uint32_t(width) ? 0 : 1);
     }
-    uint32_t v[3];
-    source.triangleVertices(t, v);
     tileIndices[tile].insert(tileIndices[tile].end(), v, v + 3);
   }
   for (const std::vector<uint32_t>& list : tileIndices) {
@@ -88,8 +93,15 @@ PreparedPanorama preparePanorama(const Panorama& panorama, glm::vec3 position, f
     prepared.triangleIndices.insert(prepared.triangleIndices.end(), list.begin(), list.end());
     prepared.tiles.push_back(tile);
   }
-  for (uint32_t v = 0; v < uint32_t(pixels); ++v) {
+  const uint32_t pixelVertices = simplified ? source.pixelVertexCount() : uint32_t(pixels);
+  for (uint32_t v = 0; v < pixelVertices; ++v) {
     if (source.orphan(v)) prepared.orphanIndices.push_back(v);
+  }
+  if (simplified) {
+    prepared.vertices.reserve(source.vertexCount());
+    for (uint32_t v = 0; v < source.vertexCount(); ++v) {
+      prepared.vertices.emplace_back(source.point(v), source.atInfinity(v) ? 0.0f : 1.0f);
+    }
   }
   return prepared;
 }
@@ -114,6 +126,15 @@ GpuPanorama::GpuPanorama(const PreparedPanorama& prepared)
   };
   triangles_ = upload(prepared.triangleIndices);
   orphans_ = upload(prepared.orphanIndices);
+  if (!prepared.vertices.empty()) {
+    vertices_ = createBuffer();
+    glNamedBufferStorage(vertices_.get(), GLsizeiptr(prepared.vertices.size() * sizeof(glm::vec4)), prepared.vertices.data(), 0);
+    // Looked up along source rays: bilinear, wrapping across the seam.
+    glTextureParameteri(color_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(color_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(color_.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(color_.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
 }
 
 }  // namespace triwalk

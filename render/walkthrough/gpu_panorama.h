@@ -7,8 +7,16 @@
 // positions are not stored: the vertex shader displaces the grid by the
 // distance texture (gl_VertexID is the pixel index).
 //
-// Preparing (decoding, the stretch test, tiling) is CPU work that a loader
-// thread does (PreparedPanorama); uploading it is the GL thread's.
+// With a simplified source mesh (WarpOptions::mesh, docs/DESIGN.md,
+// "Simplified source meshes") the vertices are stored explicitly (a world
+// point, or a direction at infinity) and the layer shader looks the colour
+// up in the colour texture along the source ray, as the CPU warp does;
+// triangles are tiled by their centroid's pixel, with bounds over all
+// their vertices.
+//
+// Preparing (decoding, the stretch test, simplifying, tiling) is CPU work
+// that a loader thread does (PreparedPanorama); uploading it is the GL
+// thread's.
 
 #include "core/synthesis/warp.h"
 #include "render/gl/gl_objects.h"
@@ -32,6 +40,9 @@ struct PreparedPanorama {
   float yaw = 0.0f;
   std::vector<uint16_t> colorHalf;  // RGBA, half floats
   std::vector<float> distance;
+  // Simplified mesh: xyz a world point (w = 1) or a direction (w = 0);
+  // empty for the grid.
+  std::vector<glm::vec4> vertices;
   std::vector<uint32_t> triangleIndices;
   std::vector<PanoramaTile> tiles;
   std::vector<uint32_t> orphanIndices;
@@ -54,6 +65,8 @@ public:
   GLuint colorTexture() const { return color_.get(); }
   GLuint distanceTexture() const { return distance_.get(); }
   GLuint triangleIndices() const { return triangles_.get(); }
+  // 0 for the grid (vertices displaced by the distance texture).
+  GLuint vertexBuffer() const { return vertices_.get(); }
   GLuint orphanIndices() const { return orphans_.get(); }
   GLsizei orphanCount() const { return orphanCount_; }
   const std::vector<PanoramaTile>& tiles() const { return tiles_; }
@@ -66,7 +79,7 @@ private:
   glm::vec3 position_{0.0f};
   float yaw_ = 0.0f;
   GlTexture color_, distance_;
-  GlBuffer triangles_, orphans_;
+  GlBuffer triangles_, orphans_, vertices_;
   GLsizei orphanCount_ = 0;
   std::vector<PanoramaTile> tiles_;
   glm::vec2 poleDistances_{0.0f};

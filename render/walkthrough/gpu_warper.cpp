@@ -52,6 +52,8 @@ GpuWarper::GpuWarper(int width, int height)
       pushProgram_("fullscreen.vert", "fill_push.frag"),
       pullProgram_("fullscreen.vert", "fill_pull.frag") {
   vertexArray_ = createVertexArray();
+  glVertexArrayAttribFormat(vertexArray_.get(), 0, 4, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(vertexArray_.get(), 0, 0);
   resize(width, height);
 }
 
@@ -120,6 +122,17 @@ void GpuWarper::drawLayer(const PinholeCamera& camera, const GpuPanorama& refere
   glClearNamedFramebufferfv(layerFramebuffers_[size_t(layer)].get(), GL_DEPTH, 0, &farDepth);
 
   layerProgram_.set("panoramaSize", glm::ivec2(reference.width(), reference.height()));
+  layerProgram_.set("panoramaSizeF", glm::vec2(float(reference.width()), float(reference.height())));
+  // A simplified mesh's vertices come from its buffer; the grid's from the
+  // distance texture (an enabled attribute without a buffer is an error).
+  const bool explicitVertices = reference.vertexBuffer() != 0;
+  layerProgram_.set("explicitVertices", explicitVertices ? 1 : 0);
+  if (explicitVertices) {
+    glVertexArrayVertexBuffer(vertexArray_.get(), 0, reference.vertexBuffer(), 0, GLsizei(sizeof(glm::vec4)));
+    glEnableVertexArrayAttrib(vertexArray_.get(), 0);
+  } else {
+    glDisableVertexArrayAttrib(vertexArray_.get(), 0);
+  }
   layerProgram_.set("panoramaYaw", reference.yaw());
   layerProgram_.set("sourcePosition", reference.position());
   layerProgram_.set("poleDistances", reference.poleDistances());

@@ -30,6 +30,8 @@ struct GpuWarpSettings {
   BlendOptions blend;
   HoleMode holes = HoleMode::Fill;
   bool showSources = false;  // red, green, blue: which references contributed (holes not filled)
+
+  bool operator==(const GpuWarpSettings&) const = default;
 };
 
 struct GpuFrameStatistics {

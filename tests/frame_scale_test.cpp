@@ -1,0 +1,90 @@
+#include "render/walkthrough/frame_scale.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <initializer_list>
+
+namespace triwalk {
+
+namespace {
+
+// A machine whose warp takes fixedMs + pixelMs * s^2 at scale s, times a
+// deterministic jitter of +-jitter (frame times on llvmpipe vary by 10-20%).
+struct SimulatedMachine {
+  double fixedMs, pixelMs, jitter = 0.0;
+  uint32_t state = 12345u;
+
+  double frame(float scale) {
+    state = state * 1664525u + 1013904223u;
+    const double unit = double(state >> 8) / double(1u << 24);  // [0, 1)
+    return (fixedMs + pixelMs * double(scale) * double(scale)) * (1.0 + jitter * (2.0 * unit - 1.0));
+  }
+  double exact(float scale) const { return fixedMs + pixelMs * double(scale) * double(scale); }
+};
+
+float walk(FrameScaleController& controller, SimulatedMachine& machine, int frames, int* changes = nullptr) {
+  float scale = controller.movingScale(1.0f);
+  for (int i = 0; i < frames; ++i) {
+    controller.record(scale, machine.frame(scale));
+    const float next = controller.movingScale(1.0f);
+    if (changes && next != scale) ++*changes;
+    scale = next;
+  }
+  return scale;
+}
+
+}  // namespace
+
+TEST_CASE("walking frames settle on the largest scale that fits the budget, whatever the machine's fixed and per-pixel costs") {
+  const double budget = 33.0;
+  const float step = FrameScaleController::kScaleStep;
+  for (const SimulatedMachine shape : {SimulatedMachine{20.0, 80.0}, SimulatedMachine{5.0, 150.0}, SimulatedMachine{0.0, 60.0}}) {
+    FrameScaleController controller(budget, 0.25f);
+    SimulatedMachine machine = shape;
+    const float scale = walk(controller, machine, 40);
+    INFO("fixed " << shape.fixedMs << " ms, per full frame " << shape.pixelMs << " ms: scale " << scale);
+    CHECK(machine.exact(scale) <= budget);
+    // Within the hysteresis of the best step: two steps up would not fit.
+    CHECK(machine.exact(scale + 2.0f * step) > budget);
+  }
+}
+
+TEST_CASE("the walking scale does not flicker between sizes on noisy frame times") {
+  FrameScaleController controller(33.0, 0.25f);
+  SimulatedMachine machine{20.0, 80.0, 0.15};
+  walk(controller, machine, 40);
+  int changes = 0;
+  const float scale = walk(controller, machine, 300, &changes);
+  INFO("scale " << scale << ", " << changes << " changes in 300 frames");
+  CHECK(changes <= 10);
+  CHECK(machine.exact(scale) <= 33.0 * 1.15);
+}
+
+TEST_CASE("the walking scale stays within the minimum, the user's render scale and full resolution") {
+  SUBCASE("a budget the machine cannot meet gives the minimum, not less") {
+    FrameScaleController controller(33.0, 0.25f);
+    SimulatedMachine machine{40.0, 100.0};
+    CHECK(walk(controller, machine, 40) == doctest::Approx(0.25f));
+  }
+  SUBCASE("a fast machine walks at full resolution") {
+    FrameScaleController controller(33.0, 0.25f);
+    SimulatedMachine machine{2.0, 10.0};
+    CHECK(walk(controller, machine, 40) == doctest::Approx(1.0f));
+  }
+  SUBCASE("after a slow stretch the scale comes back up to full") {
+    FrameScaleController controller(33.0, 0.25f);
+    SimulatedMachine slow{20.0, 200.0};
+    CHECK(walk(controller, slow, 40) < 0.5f);
+    SimulatedMachine fast{2.0, 10.0};
+    CHECK(walk(controller, fast, 60) == doctest::Approx(1.0f));
+  }
+  SUBCASE("never above the user's render scale, and full before any frame is measured") {
+    FrameScaleController controller(33.0, 0.25f);
+    CHECK(controller.movingScale(1.0f) == 1.0f);
+    CHECK(controller.movingScale(0.5f) == 0.5f);
+  }
+}
+
+}  // namespace triwalk

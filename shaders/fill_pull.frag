@@ -13,6 +13,12 @@ uniform float epsilon;
 layout(location = 0) out vec4 outValue;
 layout(location = 1) out vec4 outColor;  // the frame's level only: black if nothing at all is known
 
+// A coarser texel, clamped to the level (its edge texels stand in for the
+// ones past it).
+vec4 parent(ivec2 texel, ivec2 coarseSize) {
+  return texelFetch(coarser, topDown(clamp(texel, ivec2(0), coarseSize - 1), coarseSize), 0);
+}
+
 void main() {
   ivec2 size = textureSize(level, 0);
   ivec2 coarseSize = textureSize(coarser, 0);
@@ -27,12 +33,9 @@ void main() {
   // nearer coarser texel weighs 3/4 along each axis.
   ivec2 base = ivec2(texel.x % 2 == 0 ? texel.x / 2 - 1 : texel.x / 2, texel.y % 2 == 0 ? texel.y / 2 - 1 : texel.y / 2);
   vec2 f = vec2(texel.x % 2 == 0 ? 0.75 : 0.25, texel.y % 2 == 0 ? 0.75 : 0.25);
-  ivec2 last = coarseSize - 1;
-  vec4 parent00 = texelFetch(coarser, topDown(clamp(base, ivec2(0), last), coarseSize), 0);
-  vec4 parent10 = texelFetch(coarser, topDown(clamp(base + ivec2(1, 0), ivec2(0), last), coarseSize), 0);
-  vec4 parent01 = texelFetch(coarser, topDown(clamp(base + ivec2(0, 1), ivec2(0), last), coarseSize), 0);
-  vec4 parent11 = texelFetch(coarser, topDown(clamp(base + ivec2(1, 1), ivec2(0), last), coarseSize), 0);
   vec4 weights = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
-  outValue = farthestSurfaceMean(parent00, parent10, parent01, parent11, weights, epsilon);
+  outValue = farthestSurfaceMean(parent(base, coarseSize), parent(base + ivec2(1, 0), coarseSize),
+                                 parent(base + ivec2(0, 1), coarseSize), parent(base + ivec2(1, 1), coarseSize), weights,
+                                 epsilon);
   outColor = outValue.a < 0.0 ? vec4(0.0, 0.0, 0.0, 1.0) : displayColor(outValue.rgb);
 }

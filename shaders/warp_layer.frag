@@ -12,7 +12,7 @@ uniform vec3 sourcePosition;
 uniform vec3 cameraPosition;
 uniform bool explicitVertices;   // simplified mesh: colour along the source ray
 uniform sampler2D colorTexture;  // bilinear, wrapping in longitude
-uniform vec2 panoramaSizeF;
+uniform ivec2 panoramaSize;
 uniform float panoramaYaw;
 in vec3 vertexColor;
 in float inverseDistance;
@@ -35,9 +35,9 @@ float warpReliability(vec3 point, vec3 normal) {
 void main() {
   vec3 color = vertexColor;
   if (explicitVertices) {
-    vec2 imagePoint = equirectImagePoint(inverseDistance > 0.0 ? worldPoint - sourcePosition : worldPoint,
-                                         panoramaSizeF, panoramaYaw);
-    color = textureLod(colorTexture, imagePoint / panoramaSizeF, 0.0).rgb;
+    vec2 size = vec2(panoramaSize);
+    vec2 imagePoint = equirectImagePoint(inverseDistance > 0.0 ? worldPoint - sourcePosition : worldPoint, size, panoramaYaw);
+    color = textureLod(colorTexture, imagePoint / size, 0.0).rgb;
   }
   layer = vec4(color, inverseDistance);
   vec3 normal = cross(dFdx(worldPoint), dFdy(worldPoint));

@@ -35,7 +35,6 @@ public:
   // A frame drawn at scale took milliseconds (the warp, finished).
   void record(float scale, double milliseconds);
 
-  double budgetMilliseconds() const { return budget_; }
   void setBudgetMilliseconds(double milliseconds);
 
 private:

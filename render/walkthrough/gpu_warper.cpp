@@ -122,7 +122,6 @@ void GpuWarper::drawLayer(const PinholeCamera& camera, const GpuPanorama& refere
   glClearNamedFramebufferfv(layerFramebuffers_[size_t(layer)].get(), GL_DEPTH, 0, &farDepth);
 
   layerProgram_.set("panoramaSize", glm::ivec2(reference.width(), reference.height()));
-  layerProgram_.set("panoramaSizeF", glm::vec2(float(reference.width()), float(reference.height())));
   // A simplified mesh's vertices come from its buffer; the grid's from the
   // distance texture (an enabled attribute without a buffer is an error).
   const bool explicitVertices = reference.vertexBuffer() != 0;

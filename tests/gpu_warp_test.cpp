@@ -60,7 +60,8 @@ GpuFrame gpuFrameOf(const std::vector<Reference>& references, const PinholeCamer
   WarpOptions options;
   options.mesh = mesh;
   for (const Reference& reference : references) {
-    panoramas.push_back(std::make_unique<GpuPanorama>(preparePanorama(reference.panorama, reference.position, 0.0f, options)));
+    panoramas.push_back(std::make_unique<GpuPanorama>(preparePanorama(
+        reference.panorama, 0.0f, WarpSource(reference.panorama, reference.position, 0.0f, options))));
     pointers.push_back(panoramas.back().get());
   }
   GpuWarper warper(camera.width, camera.height);
@@ -199,6 +200,38 @@ TEST_CASE("the walkthrough renderer draws the three references of the triangle a
   CHECK(outside.available == 3);
   // The working set never loads a sample twice while it stays resident.
   CHECK(cache.statistics().resident >= 3);
+}
+
+TEST_CASE("the working set simplifies a reference once: later walks read its mesh from the data set's store") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory.path(), 3, 3, 128, 0);
+  const Dataset dataset = Dataset::open(directory.path());
+  auto context = createHeadlessContext();
+  WarpOptions options;
+  options.mesh = SourceMesh::Simplified;
+  const auto indexCounts = [&](PanoramaCache& cache) {
+    std::vector<GLsizei> counts;
+    for (int sample = 0; sample < 3; ++sample) {
+      GLsizei count = 0;
+      for (const PanoramaTile& tile : cache.wait(sample)->tiles()) count += tile.indexCount;
+      counts.push_back(count);
+    }
+    return counts;
+  };
+  std::vector<GLsizei> first, later;
+  {
+    PanoramaCache cache(dataset, options, size_t(64) << 20);
+    first = indexCounts(cache);
+    CHECK(cache.statistics().meshesSimplified == 3);
+    CHECK(cache.statistics().meshesRead == 0);
+  }
+  {
+    PanoramaCache cache(dataset, options, size_t(64) << 20);
+    later = indexCounts(cache);
+    CHECK(cache.statistics().meshesSimplified == 0);
+    CHECK(cache.statistics().meshesRead == 3);
+  }
+  CHECK(later == first);
 }
 
 TEST_CASE("simplified source meshes warp the built-in scene like the exact grid (PSNR >= 35 dB) with far fewer triangles") {

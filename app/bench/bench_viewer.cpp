@@ -1,10 +1,12 @@
 #include "app/bench/bench_groups.h"
 #include "app/setup/walkthrough_setup.h"
 #include "core/io/camera_path.h"
+#include "core/io/simplified_mesh_store.h"
 #include "render/walkthrough/frame_scale.h"
 #include "render/walkthrough/walkthrough_renderer.h"
 
 #include <algorithm>
+#include <functional>
 #include <thread>
 
 namespace triwalk {
@@ -51,13 +53,54 @@ Walk walk(const Dataset& dataset, const ViewMesh& mesh, const std::vector<Camera
   return result;
 }
 
+// What the loader thread does for one reference (decode, warp source,
+// tiles), for the walk's first references: the grid, a simplification, and
+// a simplification read from the data set's mesh store.
+void benchReferencePreparation(BenchTable& table, const Dataset& dataset, const ViewMesh& mesh) {
+  const std::vector<int> references(mesh.vertices().begin(),
+                                    mesh.vertices().begin() + std::min<ptrdiff_t>(3, ptrdiff_t(mesh.vertices().size())));
+  const std::string size = std::to_string(dataset.manifest().width) + "x" + std::to_string(dataset.manifest().height) +
+                           ", mean of " + std::to_string(references.size()) + " references";
+  SimplifiedMeshStore store(dataset);
+  WarpOptions simplified;
+  simplified.mesh = SourceMesh::Simplified;
+  struct Way {
+    std::string name;
+    std::function<WarpSource(const ViewRecord&, const Panorama&)> source;
+  };
+  const auto yaw = [](const ViewRecord& view) { return degreesToRadians(view.yawDegrees); };
+  const std::vector<Way> ways = {
+      {"grid", [&](const ViewRecord& v, const Panorama& p) { return WarpSource(p, v.position, yaw(v), WarpOptions{}); }},
+      {"simplified now", [&](const ViewRecord& v, const Panorama& p) { return WarpSource(p, v.position, yaw(v), simplified); }},
+      {"simplified, read from the data set's mesh store",
+       [&](const ViewRecord& v, const Panorama& p) { return store.source(v, p, simplified); }},
+  };
+  for (const Way& way : ways) {
+    double decodeSeconds = 0.0, totalSeconds = 0.0;
+    for (const int sample : references) {
+      const ViewRecord& view = dataset.sample(sample);
+      const auto start = BenchClock::now();
+      const Panorama panorama = dataset.loadView(view);
+      decodeSeconds += secondsSince(start);
+      const PreparedPanorama prepared = preparePanorama(panorama, yaw(view), way.source(view, panorama));
+      totalSeconds += secondsSince(start);
+    }
+    const double n = double(references.size());
+    table.add({"reference preparation on the viewer's loader thread (" + way.name + ")", size,
+               formatNumber(1000.0 * totalSeconds / n, 0) + " ms",
+               "of which decoding the EXR " + formatNumber(1000.0 * decodeSeconds / n, 0) +
+                   " ms; then the warp source and the GPU tiles"});
+  }
+}
+
 }  // namespace
 
 // The viewer's frame loop without the window: walking along a line at
 // 1.2 m/s and 30 frames a second, panoramas from the working set that never
 // blocks (a reference still loading is drawn without); with the exact grids
 // and with simplified meshes, each at full resolution and with the frame
-// budget the viewer walks with by default.
+// budget the viewer walks with by default. Simplified meshes walk once more
+// first, with the data set's mesh store as found, which fills it.
 void benchViewer(BenchTable& table, const Dataset& dataset, const std::string& selection, int frames) {
   const ViewMesh mesh = walkthroughMesh(dataset, selection);
   glm::dvec2 lower(1e30), upper(-1e30);
@@ -70,25 +113,42 @@ void benchViewer(BenchTable& table, const Dataset& dataset, const std::string& s
   const std::string size = "1280x720, " + std::to_string(frames) + " frames over " + formatNumber(length, 1) + " m, " +
                            std::to_string(mesh.vertexCount()) + " references of " + std::to_string(dataset.manifest().width) +
                            "x" + std::to_string(dataset.manifest().height);
+  const auto loading = [](const Walk& result) {
+    return std::to_string(result.incomplete) + " frames drawn with a reference still loading; working set " +
+           std::to_string(result.cache.misses) + " misses, " + std::to_string(result.cache.hits) + " hits";
+  };
+  const auto addBudgetRow = [&](const std::string& name, const Walk& result, const std::string& more) {
+    table.add({"viewer frame time walking, " + name + "frame budget " + formatNumber(kWalkFrameBudgetMilliseconds, 0) +
+                   " ms (the viewer's default), median / p95",
+               size, formatMedianAndP95(result.milliseconds),
+               "mean scale " + formatNumber(result.meanScale, 2) +
+                   " of each side while walking (full once the walker stops); " + loading(result) + more});
+  };
   for (const SourceMesh sourceMesh : {SourceMesh::Grid, SourceMesh::Simplified}) {
     const std::string meshName = std::string(sourceMeshName(sourceMesh)) + " meshes, ";
+    if (sourceMesh == SourceMesh::Simplified) {
+      // The data set's mesh store as found (empty on a first visit): the
+      // walk simplifies and stores what it meets; the walks after read it.
+      const Walk first = walk(dataset, mesh, poses, sourceMesh, true);
+      addBudgetRow(meshName + "store as found, ", first,
+                   "; meshes simplified on the way " + std::to_string(first.cache.meshesSimplified) + ", read from the store " +
+                       std::to_string(first.cache.meshesRead));
+    }
     for (const bool holdBudget : {false, true}) {
       const Walk result = walk(dataset, mesh, poses, sourceMesh, holdBudget);
-      const std::string loading = std::to_string(result.incomplete) +
-                                  " frames drawn with a reference still loading; working set " +
-                                  std::to_string(result.cache.misses) + " misses, " + std::to_string(result.cache.hits) + " hits";
+      const std::string stored = sourceMesh == SourceMesh::Simplified
+                                     ? "; meshes read from the store " + std::to_string(result.cache.meshesRead) +
+                                           ", simplified " + std::to_string(result.cache.meshesSimplified)
+                                     : "";
       if (holdBudget) {
-        table.add({"viewer frame time walking, " + meshName + "frame budget " +
-                       formatNumber(kWalkFrameBudgetMilliseconds, 0) + " ms (the viewer's default), median / p95",
-                   size, formatMedianAndP95(result.milliseconds),
-                   "mean scale " + formatNumber(result.meanScale, 2) +
-                       " of each side while walking (full once the walker stops); " + loading});
+        addBudgetRow(meshName, result, stored);
       } else {
         table.add({"viewer frame time walking, " + meshName + "full resolution, median / p95", size,
-                   formatMedianAndP95(result.milliseconds), "frames never wait for the disk: " + loading});
+                   formatMedianAndP95(result.milliseconds), "frames never wait for the disk: " + loading(result) + stored});
       }
     }
   }
+  benchReferencePreparation(table, dataset, mesh);
 }
 
 }  // namespace triwalk

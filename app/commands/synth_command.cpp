@@ -8,6 +8,7 @@
 #include "core/image/color.h"
 #include "core/io/dataset.h"
 #include "core/io/png_io.h"
+#include "core/io/simplified_mesh_store.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 
@@ -30,11 +31,11 @@ Reconstruction reconstruct(const Dataset& dataset, const std::vector<int>& refer
                            const Panorama* truth, const SynthesisOptions& synthesis, const ErrorOptions& errorOptions) {
   std::vector<std::unique_ptr<WarpSource>> sources;
   std::vector<const WarpSource*> pointers;
+  SimplifiedMeshStore meshStore(dataset);
   for (int index : references) {
     const ViewRecord& record = dataset.sample(index);
     const Panorama panorama = dataset.loadView(record, width);
-    sources.push_back(std::make_unique<WarpSource>(panorama, record.position, degreesToRadians(record.yawDegrees),
-                                                   synthesis.warp));
+    sources.push_back(std::make_unique<WarpSource>(meshStore.source(record, panorama, synthesis.warp)));
     pointers.push_back(sources.back().get());
   }
   const int destinationWidth = sources.front()->width();

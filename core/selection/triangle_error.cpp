@@ -1,6 +1,7 @@
 #include "core/selection/triangle_error.h"
 
 #include "core/image/color.h"
+#include "core/io/simplified_mesh_store.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 
@@ -28,14 +29,14 @@ DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const Trian
 
   ProgressReporter progress("load " + std::to_string(settings.width) + "x" + std::to_string(settings.width / 2),
                             size_t(samples + probes), quiet);
+  SimplifiedMeshStore meshStore(dataset);
   tbb::parallel_for(0, samples + probes, [&](int i) {
     if (interruptRequested()) return;
     const bool isSample = i < samples;
     const ViewRecord& view = isSample ? dataset.sample(i) : dataset.probe(i - samples);
     const Panorama panorama = dataset.loadView(view, settings.width);
     if (isSample) {
-      sources_[size_t(i)] = std::make_unique<WarpSource>(panorama, view.position, degreesToRadians(view.yawDegrees),
-                                                         settings.synthesis.warp);
+      sources_[size_t(i)] = std::make_unique<WarpSource>(meshStore.source(view, panorama, settings.synthesis.warp));
       sampleDisplay_[size_t(i)] = toDisplayColors(panorama.color);
     } else {
       probeDisplay_[size_t(i - samples)] = toDisplayColors(panorama.color);

@@ -74,7 +74,8 @@ void WarpSource::triangleVertices(uint32_t triangle, uint32_t vertices[3]) const
   }
 }
 
-WarpSource::WarpSource(const Panorama& panorama, glm::vec3 position, float yawRadians, const WarpOptions& options)
+WarpSource::WarpSource(const Panorama& panorama, glm::vec3 position, float yawRadians, const WarpOptions& options,
+                       const SimplifiedTriangles* stored)
     : width_(panorama.width()), height_(panorama.height()), position_(position),
       projection_{panorama.width(), panorama.height(), yawRadians} {
   TRIWALK_CHECK(width_ >= 2 && height_ >= 2, "panorama too small to warp");
@@ -160,10 +161,12 @@ WarpSource::WarpSource(const Panorama& panorama, glm::vec3 position, float yawRa
   }
   for (size_t i = 0; i < points_.size(); ++i) orphan_[i] &= uint8_t(!infinite_[i]);
   pixelVertexCount_ = uint32_t(pixels);
-  if (options.mesh == SourceMesh::Simplified) simplify(panorama, options.meshTolerancePixels);
+  if (options.mesh == SourceMesh::Simplified) {
+    adoptSimplified(panorama, stored ? *stored : simplifyKept(panorama, options.meshTolerancePixels));
+  }
 }
 
-void WarpSource::simplify(const Panorama& panorama, float tolerancePixels) {
+SimplifiedTriangles WarpSource::simplifyKept(const Panorama& panorama, float tolerancePixels) const {
   // Surfaces and sky apart: sky vertices are directions, not points, and
   // no kept triangle joins the two.
   std::vector<uint32_t> surface, sky;
@@ -188,9 +191,13 @@ void WarpSource::simplify(const Panorama& panorama, float tolerancePixels) {
     std::nth_element(distances.begin(), nth, distances.end());
     nearDistance = *nth;
   }
-  surface = simplifyTriangles(surface, points_, tolerancePixels * pixelAngle * nearDistance);
-  sky = simplifyTriangles(sky, points_, tolerancePixels * pixelAngle);
+  return {simplifyTriangles(surface, points_, tolerancePixels * pixelAngle * nearDistance),
+          simplifyTriangles(sky, points_, tolerancePixels * pixelAngle)};
+}
 
+void WarpSource::adoptSimplified(const Panorama& panorama, SimplifiedTriangles triangles) {
+  const std::vector<uint32_t>& surface = triangles.surface;
+  const std::vector<uint32_t>& sky = triangles.sky;
   // Keep the vertices the triangles and the orphan splats use, pixels
   // first in pixel order, then the poles.
   const uint32_t pixels = uint32_t(width_) * uint32_t(height_);
@@ -223,6 +230,7 @@ void WarpSource::simplify(const Panorama& panorama, float tolerancePixels) {
   keptCount_ = uint32_t(triangles_.size() / 3);
   mesh_ = SourceMesh::Simplified;
   texture_ = panorama.color;
+  simplifiedTriangles_ = std::move(triangles);
 }
 
 glm::vec3 WarpSource::colorAlong(glm::vec3 direction) const {

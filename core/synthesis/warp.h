@@ -68,13 +68,25 @@ const char* stretchTestName(StretchTest test);
 SourceMesh parseSourceMesh(const std::string& name);
 const char* sourceMeshName(SourceMesh mesh);
 
+// A source's simplified triangles in its grid's vertex numbering, surface
+// and sky apart: what meshoptimizer computes (the costly part of preparing
+// a simplified source) and what a data set's mesh store keeps
+// (core/io/simplified_mesh_store.h).
+struct SimplifiedTriangles {
+  std::vector<uint32_t> surface, sky;
+};
+
 // A source panorama prepared for warping: world points of its pixels and
 // pole vertices, and which triangles survive the stretch test (optionally
 // simplified). Depends only on the source, so decimation prepares each
 // sample once.
 class WarpSource {
 public:
-  WarpSource(const Panorama& panorama, glm::vec3 position, float yawRadians, const WarpOptions& options);
+  // With a simplified mesh, `stored` (when given) are the triangles an
+  // earlier simplification of this same source computed; they are used as
+  // they are instead of simplifying again.
+  WarpSource(const Panorama& panorama, glm::vec3 position, float yawRadians, const WarpOptions& options,
+             const SimplifiedTriangles* stored = nullptr);
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -101,9 +113,12 @@ public:
   // Simplified: the source's colour along a ray from its centre (bilinear,
   // wrapping across the seam).
   glm::vec3 colorAlong(glm::vec3 direction) const;
+  // Simplified: the triangles in grid numbering, for the mesh store.
+  const SimplifiedTriangles& simplifiedTriangles() const { return simplifiedTriangles_; }
 
 private:
-  void simplify(const Panorama& panorama, float tolerancePixels);
+  SimplifiedTriangles simplifyKept(const Panorama& panorama, float tolerancePixels) const;
+  void adoptSimplified(const Panorama& panorama, SimplifiedTriangles triangles);
 
   int width_ = 0;
   int height_ = 0;
@@ -119,6 +134,7 @@ private:
   uint32_t pixelVertexCount_ = 0;
   uint32_t keptCount_ = 0;
   ColorImage texture_;              // simplified: the source's colours, for colorAlong
+  SimplifiedTriangles simplifiedTriangles_;
 };
 
 // A destination camera: an equirectangular panorama at a position, or a

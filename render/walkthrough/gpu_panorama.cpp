@@ -24,16 +24,16 @@ size_t PreparedPanorama::bytes() const {
          (triangleIndices.size() + orphanIndices.size()) * sizeof(uint32_t);
 }
 
-PreparedPanorama preparePanorama(const Panorama& panorama, glm::vec3 position, float yawRadians, const WarpOptions& options) {
+PreparedPanorama preparePanorama(const Panorama& panorama, float yawRadians, const WarpSource& source) {
   PreparedPanorama prepared;
   prepared.width = panorama.width();
   prepared.height = panorama.height();
+  const glm::vec3 position = source.position();
   prepared.position = position;
   prepared.yaw = yawRadians;
   const int width = prepared.width, height = prepared.height;
   // The mesh decisions (stretch test, orphans, poles, simplification) come
   // from the CPU reference itself, so both paths warp the same triangles.
-  const WarpSource source(panorama, position, yawRadians, options);
   const bool simplified = source.mesh() == SourceMesh::Simplified;
   const size_t pixels = size_t(width) * size_t(height);
 

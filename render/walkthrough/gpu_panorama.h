@@ -14,9 +14,9 @@
 // triangles are tiled by their centroid's pixel, with bounds over all
 // their vertices.
 //
-// Preparing (decoding, the stretch test, simplifying, tiling) is CPU work
-// that a loader thread does (PreparedPanorama); uploading it is the GL
-// thread's.
+// Preparing (decoding, the stretch test, simplifying or reading the
+// stored simplification, tiling) is CPU work that a loader thread does
+// (PreparedPanorama); uploading it is the GL thread's.
 
 #include "core/synthesis/warp.h"
 #include "render/gl/gl_objects.h"
@@ -52,7 +52,9 @@ struct PreparedPanorama {
   size_t bytes() const;
 };
 
-PreparedPanorama preparePanorama(const Panorama& panorama, glm::vec3 position, float yawRadians, const WarpOptions& options);
+// source is panorama's warp source (core/io/simplified_mesh_store.h makes
+// it from a data set, with stored simplified triangles).
+PreparedPanorama preparePanorama(const Panorama& panorama, float yawRadians, const WarpSource& source);
 
 class GpuPanorama {
 public:

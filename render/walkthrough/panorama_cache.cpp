@@ -7,7 +7,8 @@
 namespace triwalk {
 
 PanoramaCache::PanoramaCache(const Dataset& dataset, const WarpOptions& options, size_t budgetBytes)
-    : dataset_(dataset), options_(options), budgetBytes_(budgetBytes), loader_([this] { loaderLoop(); }) {}
+    : dataset_(dataset), options_(options), budgetBytes_(budgetBytes), meshStore_(dataset),
+      loader_([this] { loaderLoop(); }) {}
 
 PanoramaCache::~PanoramaCache() {
   {
@@ -51,8 +52,9 @@ void PanoramaCache::loaderLoop() {
     try {
       const ViewRecord& view = dataset_.sample(sample);
       const Panorama panorama = dataset_.loadView(view);
+      const WarpSource source = meshStore_.source(view, panorama, options_);
       prepared = std::make_shared<const PreparedPanorama>(
-          preparePanorama(panorama, view.position, degreesToRadians(view.yawDegrees), options_));
+          preparePanorama(panorama, degreesToRadians(view.yawDegrees), source));
     } catch (const std::exception& error) {
       failure = error.what();
     }
@@ -128,6 +130,8 @@ PanoramaCache::Statistics PanoramaCache::statistics() const {
   statistics.misses = misses_;
   statistics.residentBytes = residentBytes_;
   statistics.resident = int(resident_.size());
+  statistics.meshesSimplified = meshStore_.simplified();
+  statistics.meshesRead = meshStore_.loaded();
   std::lock_guard lock(mutex_);
   for (int s : wanted_) statistics.pending += !residentSamples_.count(s);
   return statistics;

@@ -5,9 +5,11 @@
 // (OpenEXR decode, stretch test, tiling) so that a frame never waits on
 // disk. The viewer asks for the current triangle's references and, at
 // lower priority, its neighbours'; a panorama still loading is reported
-// missing and the frame draws without it.
+// missing and the frame draws without it. Simplified meshes come from the
+// data set's mesh store, so a reference is simplified once, ever.
 
 #include "core/io/dataset.h"
+#include "core/io/simplified_mesh_store.h"
 #include "render/walkthrough/gpu_panorama.h"
 
 #include <condition_variable>
@@ -46,6 +48,7 @@ public:
     size_t residentBytes = 0;
     int resident = 0;
     int pending = 0;  // wanted and not ready yet
+    int meshesSimplified = 0, meshesRead = 0;  // simplified source meshes: made here, read from the store
   };
   Statistics statistics() const;
 
@@ -55,6 +58,7 @@ private:
   const Dataset& dataset_;
   WarpOptions options_;
   size_t budgetBytes_;
+  SimplifiedMeshStore meshStore_;  // used by the loader thread; its counts are atomic
 
   mutable std::mutex mutex_;
   std::condition_variable wake_;      // loader: new wishes or stop

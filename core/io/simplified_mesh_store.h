@@ -1,0 +1,50 @@
+#pragma once
+// Simplified source meshes kept beside a data set's panoramas
+// (docs/DESIGN.md, "Simplified source meshes"). Simplifying a 1024x512
+// reference costs meshoptimizer most of a second, five times the rest of
+// preparing it for the GPU, so a walk into new triangles outran the
+// viewer's loader. The triangles depend only on the view (its distances,
+// position, yaw, width) and the warp options, so they are computed once
+// and kept in DATASET/meshes/, one file per view and width, under a key
+// of all of these. A file whose key or checksum does not match, or that is
+// malformed, is simplified again and replaced: it is a cache, never input
+// the user must mend. A data set that cannot be written (read-only, full)
+// only costs the time, and says so once on stderr.
+
+#include "core/io/dataset.h"
+#include "core/synthesis/warp.h"
+
+#include <atomic>
+#include <filesystem>
+#include <mutex>
+#include <optional>
+
+namespace triwalk {
+
+class SimplifiedMeshStore {
+public:
+  explicit SimplifiedMeshStore(const Dataset& dataset);
+
+  // The warp source of view (its panorama loaded at any width). With a
+  // simplified mesh, its triangles come from the store when it holds them
+  // for this very source, else they are simplified now and stored.
+  WarpSource source(const ViewRecord& view, const Panorama& panorama, const WarpOptions& options);
+
+  // Where view's triangles at this width are kept.
+  std::filesystem::path file(const ViewRecord& view, int width) const;
+
+  // Sources whose triangles were read from the store, and simplified here.
+  int loaded() const { return loaded_; }
+  int simplified() const { return simplified_; }
+
+private:
+  std::optional<SimplifiedTriangles> load(const std::filesystem::path& path, uint64_t key, uint32_t vertexCount) const;
+  void store(const std::filesystem::path& path, uint64_t key, const SimplifiedTriangles& triangles);
+
+  std::filesystem::path directory_;
+  std::atomic<int> loaded_ = 0, simplified_ = 0;
+  std::atomic<bool> warned_ = false;
+  std::mutex directories_;  // sources are made on several threads at once
+};
+
+}  // namespace triwalk

@@ -18,7 +18,9 @@
 
 #include <doctest/doctest.h>
 
+#include <chrono>
 #include <cstdlib>
+#include <thread>
 
 namespace triwalk {
 
@@ -202,7 +204,7 @@ TEST_CASE("the walkthrough renderer draws the three references of the triangle a
   CHECK(cache.statistics().resident >= 3);
 }
 
-TEST_CASE("the working set simplifies a reference once: later walks read its mesh from the data set's store") {
+TEST_CASE("the working set simplifies a reference once, ahead of the walk when idle: later walks read its mesh from the data set's store") {
   testing::TemporaryDirectory directory;
   testing::writeAnalyticDataset(directory.path(), 3, 3, 128, 0);
   const Dataset dataset = Dataset::open(directory.path());
@@ -224,12 +226,24 @@ TEST_CASE("the working set simplifies a reference once: later walks read its mes
     first = indexCounts(cache);
     CHECK(cache.statistics().meshesSimplified == 3);
     CHECK(cache.statistics().meshesRead == 0);
+    // While nothing is wanted, the loader simplifies into the store ahead
+    // of the walk: samples 3 and 4 without loading them onto the GPU.
+    const std::vector<int> ahead = {3, 4};
+    cache.simplifyWhenIdle(ahead);
+    const auto start = std::chrono::steady_clock::now();
+    while (cache.statistics().meshesSimplified < 5 && std::chrono::steady_clock::now() - start < std::chrono::seconds(60)) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    CHECK(cache.statistics().meshesSimplified == 5);
+    CHECK(cache.statistics().resident == 3);
   }
   {
     PanoramaCache cache(dataset, options, size_t(64) << 20);
     later = indexCounts(cache);
+    CHECK(cache.wait(3) != nullptr);
+    CHECK(cache.wait(4) != nullptr);
     CHECK(cache.statistics().meshesSimplified == 0);
-    CHECK(cache.statistics().meshesRead == 3);
+    CHECK(cache.statistics().meshesRead == 5);
   }
   CHECK(later == first);
 }

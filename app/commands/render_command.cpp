@@ -115,7 +115,7 @@ void registerRenderCommand(CLI::App& app) {
   command->add_flag("--show-sources", arguments->showSources, "Color each pixel by the references that made it");
   command->add_option("--cache-mb", arguments->cacheMegabytes, "Memory for resident panoramas, MiB")->capture_default_str();
   command->add_option("--gl", arguments->gl, "Headless OpenGL: auto, egl or osmesa")->capture_default_str();
-  addRenderQualityOptions(*command, arguments->quality);
+  addRenderQualityOptions(*command, arguments->quality, SourceMesh::Grid);
 
   command->callback([arguments] {
     const Arguments& a = *arguments;

@@ -48,8 +48,9 @@ void addBlendOptions(CLI::App& command, QualityArguments& arguments) {
 
 }  // namespace
 
-void addRenderQualityOptions(CLI::App& command, QualityArguments& arguments) {
+void addRenderQualityOptions(CLI::App& command, QualityArguments& arguments, SourceMesh mesh) {
   addStretchOptions(command, arguments);
+  arguments.sourceMesh = sourceMeshName(mesh);
   addSourceMeshOptions(command, arguments);
   addBlendOptions(command, arguments);
   addHoleOption(command, arguments, HoleMode::Fill,

@@ -31,9 +31,9 @@ struct QualityArguments {
 // Warp, blend, hole and error options (synth, decimate, eval); holes: the
 // command's default for --holes (what the error is measured on).
 void addQualityOptions(CLI::App& command, QualityArguments& arguments, HoleMode holes);
-// The stretch test, the source mesh, the blend and --holes (default fill)
-// only (render, view: the GPU warp).
-void addRenderQualityOptions(CLI::App& command, QualityArguments& arguments);
+// The stretch test, the source mesh (the command's default), the blend and
+// --holes (default fill) only (render, view: the GPU warp).
+void addRenderQualityOptions(CLI::App& command, QualityArguments& arguments, SourceMesh mesh);
 
 SynthesisOptions synthesisOptions(const QualityArguments& arguments);
 ErrorOptions errorOptions(const QualityArguments& arguments);

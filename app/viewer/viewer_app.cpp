@@ -18,6 +18,7 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -74,8 +75,7 @@ public:
     state_.grazingAngleDegrees = options.synthesis.warp.grazingAngleDegrees;
     state_.walk.position = startPosition(state_.mesh, sampleEyeHeight(dataset_));
     warpOptions_ = options.synthesis.warp;
-    cache_ = std::make_unique<PanoramaCache>(dataset_, warpOptions_, options.cacheBytes);
-    renderer_ = std::make_unique<WalkthroughRenderer>(state_.mesh, *cache_, options.width, options.height);
+    openWorkingSet();
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
@@ -179,10 +179,24 @@ private:
       warpOptions_.grazingAngleDegrees = state_.grazingAngleDegrees;
       warpOptions_.stretchTest = StretchTest::GrazingAngle;
       renderer_.reset();
-      cache_ = std::make_unique<PanoramaCache>(dataset_, warpOptions_, options_.cacheBytes);
-      renderer_ = std::make_unique<WalkthroughRenderer>(state_.mesh, *cache_, options_.width, options_.height);
+      openWorkingSet();
       ++meshVersion_;
     }
+  }
+
+  // A working set for warpOptions_ and its renderer; with simplified
+  // meshes, the loader simplifies the walkthrough's references into the
+  // data set's store while idle, nearest to the walker first, so that a
+  // first walk does not wait for them.
+  void openWorkingSet() {
+    cache_ = std::make_unique<PanoramaCache>(dataset_, warpOptions_, options_.cacheBytes);
+    renderer_ = std::make_unique<WalkthroughRenderer>(state_.mesh, *cache_, options_.width, options_.height);
+    std::vector<int> references = state_.mesh.vertices();
+    const glm::dvec2 walker(state_.walk.position);
+    std::stable_sort(references.begin(), references.end(), [&](int a, int b) {
+      return glm::distance(state_.mesh.position(a), walker) < glm::distance(state_.mesh.position(b), walker);
+    });
+    cache_->simplifyWhenIdle(references);
   }
 
   // While anything changes (the walk, a setting), frames fit the budget;

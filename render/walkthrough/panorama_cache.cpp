@@ -28,23 +28,37 @@ void PanoramaCache::request(std::span<const int> samples) {
   wake_.notify_all();
 }
 
+void PanoramaCache::simplifyWhenIdle(std::span<const int> samples) {
+  if (options_.mesh != SourceMesh::Simplified) return;
+  {
+    std::lock_guard lock(mutex_);
+    idleWork_.assign(samples.begin(), samples.end());
+  }
+  wake_.notify_all();
+}
+
 void PanoramaCache::loaderLoop() {
   std::unique_lock lock(mutex_);
+  const auto unloaded = [&](int s) { return !ready_.count(s) && !failures_.count(s) && !residentSamples_.count(s); };
   while (true) {
-    wake_.wait(lock, [&] {
-      if (stop_) return true;
-      return std::any_of(wanted_.begin(), wanted_.end(), [&](int s) {
-        return !ready_.count(s) && !failures_.count(s) && !residentSamples_.count(s);
-      });
-    });
+    wake_.wait(lock, [&] { return stop_ || !idleWork_.empty() || std::any_of(wanted_.begin(), wanted_.end(), unloaded); });
     if (stop_) return;
-    int sample = -1;
-    for (int s : wanted_) {
-      if (!ready_.count(s) && !failures_.count(s) && !residentSamples_.count(s)) {
-        sample = s;
-        break;
+    const auto next = std::find_if(wanted_.begin(), wanted_.end(), unloaded);
+    if (next == wanted_.end()) {
+      // Idle: simplify one mesh into the store (a failure to read shows
+      // when the sample is wanted).
+      const int sample = idleWork_.front();
+      idleWork_.pop_front();
+      lock.unlock();
+      try {
+        const ViewRecord& view = dataset_.sample(sample);
+        meshStore_.source(view, dataset_.loadView(view), options_);
+      } catch (const std::exception&) {
       }
+      lock.lock();
+      continue;
     }
+    const int sample = *next;
     loading_ = sample;
     lock.unlock();
     std::shared_ptr<const PreparedPanorama> prepared;

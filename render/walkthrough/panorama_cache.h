@@ -42,6 +42,10 @@ public:
   const GpuPanorama* find(int sample);
   // GL thread: waits until the sample is loaded (offline rendering).
   const GpuPanorama* wait(int sample);
+  // With simplified meshes: samples whose meshes the loader simplifies
+  // into the data set's store while nothing is wanted (replaces the earlier
+  // list), so that a first walk does not wait for meshoptimizer.
+  void simplifyWhenIdle(std::span<const int> samples);
 
   struct Statistics {
     uint64_t hits = 0, misses = 0;
@@ -64,6 +68,7 @@ private:
   std::condition_variable wake_;      // loader: new wishes or stop
   std::condition_variable prepared_;  // GL thread: something was prepared
   std::deque<int> wanted_;
+  std::deque<int> idleWork_;  // simplifyWhenIdle
   std::vector<int> pinned_;  // the latest request, never evicted
   std::map<int, std::shared_ptr<const PreparedPanorama>> ready_;
   std::map<int, std::string> failures_;

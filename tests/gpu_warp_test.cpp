@@ -227,14 +227,16 @@ TEST_CASE("the working set simplifies a reference once, ahead of the walk when i
     CHECK(cache.statistics().meshesSimplified == 3);
     CHECK(cache.statistics().meshesRead == 0);
     // While nothing is wanted, the loader simplifies into the store ahead
-    // of the walk: samples 3 and 4 without loading them onto the GPU.
-    const std::vector<int> ahead = {3, 4};
+    // of the walk: samples 3 and 4 without loading them onto the GPU, and
+    // not sample 0 again, which is loaded.
+    const std::vector<int> ahead = {0, 3, 4};
     cache.simplifyWhenIdle(ahead);
     const auto start = std::chrono::steady_clock::now();
     while (cache.statistics().meshesSimplified < 5 && std::chrono::steady_clock::now() - start < std::chrono::seconds(60)) {
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     CHECK(cache.statistics().meshesSimplified == 5);
+    CHECK(cache.statistics().meshesRead == 0);
     CHECK(cache.statistics().resident == 3);
   }
   {

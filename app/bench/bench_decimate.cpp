@@ -25,7 +25,6 @@ void benchDecimate(BenchTable& table, const Scene& scene, const std::string& dat
     directory = std::filesystem::temp_directory_path() / "triwalk-bench-dataset";
     CaptureOptions options;  // the default capture: 30 paths x 15 samples at 1024x512
     options.probes = 0;
-    options.quiet = true;
     captureDataset(scene, "builtin", options, directory);
   }
   const Dataset dataset = Dataset::open(directory);
@@ -35,13 +34,15 @@ void benchDecimate(BenchTable& table, const Scene& scene, const std::string& dat
   TriangleErrorSettings settings;
   settings.width = errorWidth;
   const auto loadStart = BenchClock::now();
-  DatasetTriangleErrors errors(dataset, settings, true);
+  // Progress on stderr (minutes of work); the table goes to stdout.
+  constexpr bool kQuiet = false;
+  DatasetTriangleErrors errors(dataset, settings, kQuiet);
   const double loadSeconds = secondsSince(loadStart);
   // What `decimate --max-error 1.85` (the main job) runs: the default
   // cost, boundary and area weights, then the refinement.
   SelectionSettings selection;
   selection.decimation.maxError = 1.85;
-  const SelectionRun run = selectReferences(dataset, errors, selection, true);
+  const SelectionRun run = selectReferences(dataset, errors, selection, kQuiet);
   const DecimationStatistics& statistics = run.statistics;
   const RefinementResult& refinement = run.refinement;
   const std::string cost = collapseCostName(selection.decimation.cost);

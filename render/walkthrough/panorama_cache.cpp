@@ -46,9 +46,11 @@ void PanoramaCache::loaderLoop() {
     const auto next = std::find_if(wanted_.begin(), wanted_.end(), unloaded);
     if (next == wanted_.end()) {
       // Idle: simplify one mesh into the store (a failure to read shows
-      // when the sample is wanted).
+      // when the sample is wanted). A sample loaded already went through
+      // the store.
       const int sample = idleWork_.front();
       idleWork_.pop_front();
+      if (!unloaded(sample)) continue;
       lock.unlock();
       try {
         const ViewRecord& view = dataset_.sample(sample);

@@ -109,13 +109,15 @@ std::optional<SimplifiedTriangles> SimplifiedMeshStore::load(const std::filesyst
       bytes.size() != sizeof(Header) + indexCount * sizeof(uint32_t)) {
     return std::nullopt;
   }
+  const auto indicesAt = [&](size_t first, size_t count) {
+    std::vector<uint32_t> list(count);
+    // An empty list's data() may be null, which memcpy must not be given.
+    if (count > 0) std::memcpy(list.data(), bytes.data() + sizeof(Header) + first * sizeof(uint32_t), count * sizeof(uint32_t));
+    return list;
+  };
   SimplifiedTriangles triangles;
-  triangles.surface.resize(header.surfaceIndices);
-  triangles.sky.resize(header.skyIndices);
-  const char* indices = bytes.data() + sizeof(Header);
-  std::memcpy(triangles.surface.data(), indices, triangles.surface.size() * sizeof(uint32_t));
-  std::memcpy(triangles.sky.data(), indices + triangles.surface.size() * sizeof(uint32_t),
-              triangles.sky.size() * sizeof(uint32_t));
+  triangles.surface = indicesAt(0, header.surfaceIndices);
+  triangles.sky = indicesAt(header.surfaceIndices, header.skyIndices);
   if (indicesChecksum(triangles) != header.checksum) return std::nullopt;
   for (const std::vector<uint32_t>* list : {&triangles.surface, &triangles.sky}) {
     for (const uint32_t v : *list) {
@@ -137,6 +139,7 @@ void SimplifiedMeshStore::store(const std::filesystem::path& path, uint64_t key,
       std::ofstream stream(temporary, std::ios::binary);
       stream.write(reinterpret_cast<const char*>(&header), sizeof(header));
       for (const std::vector<uint32_t>* list : {&triangles.surface, &triangles.sky}) {
+        if (list->empty()) continue;  // data() may be null
         stream.write(reinterpret_cast<const char*>(list->data()), std::streamsize(list->size() * sizeof(uint32_t)));
       }
       stream.close();

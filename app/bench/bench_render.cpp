@@ -24,7 +24,8 @@ void benchRender(BenchTable& table, const BenchViews& views, int frames) {
     double prepareSeconds = 0.0;
     for (size_t i = 0; i < 3; ++i) {
       const auto start = BenchClock::now();
-      const PreparedPanorama prepared = preparePanorama(views.panoramas[i], 0.0f, WarpSource(views.panoramas[i], views.positions[i], 0.0f, options));
+      const WarpSource source(views.panoramas[i], views.positions[i], 0.0f, options);
+      const PreparedPanorama prepared = preparePanorama(views.panoramas[i], 0.0f, source);
       prepareSeconds += secondsSince(start) / 3.0;
       panoramas.push_back(std::make_unique<GpuPanorama>(prepared));
       references.push_back(panoramas.back().get());

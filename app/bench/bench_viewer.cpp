@@ -57,8 +57,8 @@ Walk walk(const Dataset& dataset, const ViewMesh& mesh, const std::vector<Camera
 // tiles), for the walk's first references: the grid, a simplification, and
 // a simplification read from the data set's mesh store.
 void benchReferencePreparation(BenchTable& table, const Dataset& dataset, const ViewMesh& mesh) {
-  const std::vector<int> references(mesh.vertices().begin(),
-                                    mesh.vertices().begin() + std::min<ptrdiff_t>(3, ptrdiff_t(mesh.vertices().size())));
+  const std::vector<int> references(
+      mesh.vertices().begin(), mesh.vertices().begin() + std::min<ptrdiff_t>(3, ptrdiff_t(mesh.vertices().size())));
   const std::string size = std::to_string(dataset.manifest().width) + "x" + std::to_string(dataset.manifest().height) +
                            ", mean of " + std::to_string(references.size()) + " references";
   SimplifiedMeshStore store(dataset);
@@ -70,8 +70,10 @@ void benchReferencePreparation(BenchTable& table, const Dataset& dataset, const 
   };
   const auto yaw = [](const ViewRecord& view) { return degreesToRadians(view.yawDegrees); };
   const std::vector<Way> ways = {
-      {"grid", [&](const ViewRecord& v, const Panorama& p) { return WarpSource(p, v.position, yaw(v), WarpOptions{}); }},
-      {"simplified now", [&](const ViewRecord& v, const Panorama& p) { return WarpSource(p, v.position, yaw(v), simplified); }},
+      {"grid",
+       [&](const ViewRecord& v, const Panorama& p) { return WarpSource(p, v.position, yaw(v), WarpOptions{}); }},
+      {"simplified now",
+       [&](const ViewRecord& v, const Panorama& p) { return WarpSource(p, v.position, yaw(v), simplified); }},
       {"simplified, read from the data set's mesh store",
        [&](const ViewRecord& v, const Panorama& p) { return store.source(v, p, simplified); }},
   };
@@ -126,25 +128,27 @@ void benchViewer(BenchTable& table, const Dataset& dataset, const std::string& s
   };
   for (const SourceMesh sourceMesh : {SourceMesh::Grid, SourceMesh::Simplified}) {
     const std::string meshName = std::string(sourceMeshName(sourceMesh)) + " meshes, ";
+    const auto meshCounts = [&](const Walk& result) {
+      return sourceMesh == SourceMesh::Grid
+                 ? std::string()
+                 : "; meshes read from the store " + std::to_string(result.cache.meshesRead) + ", simplified " +
+                       std::to_string(result.cache.meshesSimplified);
+    };
     if (sourceMesh == SourceMesh::Simplified) {
       // The data set's mesh store as found (empty on a first visit): the
       // walk simplifies and stores what it meets; the walks after read it.
       const Walk first = walk(dataset, mesh, poses, sourceMesh, true);
-      addBudgetRow(meshName + "store as found, ", first,
-                   "; meshes simplified on the way " + std::to_string(first.cache.meshesSimplified) + ", read from the store " +
-                       std::to_string(first.cache.meshesRead));
+      addBudgetRow(meshName + "store as found, ", first, meshCounts(first));
     }
     for (const bool holdBudget : {false, true}) {
       const Walk result = walk(dataset, mesh, poses, sourceMesh, holdBudget);
-      const std::string stored = sourceMesh == SourceMesh::Simplified
-                                     ? "; meshes read from the store " + std::to_string(result.cache.meshesRead) +
-                                           ", simplified " + std::to_string(result.cache.meshesSimplified)
-                                     : "";
+      const std::string stored = meshCounts(result);
       if (holdBudget) {
         addBudgetRow(meshName, result, stored);
       } else {
         table.add({"viewer frame time walking, " + meshName + "full resolution, median / p95", size,
-                   formatMedianAndP95(result.milliseconds), "frames never wait for the disk: " + loading(result) + stored});
+                   formatMedianAndP95(result.milliseconds),
+                   "frames never wait for the disk: " + loading(result) + stored});
       }
     }
   }

@@ -32,7 +32,8 @@ void registerViewCommand(CLI::App& app) {
   command->add_option("--screenshot", arguments->screenshot, "With --frames: PNG of the window at the last frame")->check(writableFile());
   command->add_option("--path", arguments->path, "With --frames: camera path file (x y z yaw pitch a line)");
   // Simplified meshes: a walk fits the frame budget at a higher resolution
-  // (docs/BENCHMARKS.md, "Stored simplified meshes"); render keeps the grid.
+  // (docs/BENCHMARKS.md, "stored simplified meshes, and the scaling row");
+  // render keeps the grid.
   addRenderQualityOptions(*command, arguments->quality, SourceMesh::Simplified);
   command->callback([arguments] {
     const Arguments& a = *arguments;

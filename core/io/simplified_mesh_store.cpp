@@ -81,9 +81,9 @@ WarpSource SimplifiedMeshStore::source(const ViewRecord& view, const Panorama& p
   const std::filesystem::path path = file(view, panorama.width());
   const uint64_t key = sourceKey(view, panorama, options);
   const uint32_t vertexCount = uint32_t(panorama.width()) * uint32_t(panorama.height()) + 2;  // pixels and poles
-  if (const std::optional<SimplifiedTriangles> stored = load(path, key, vertexCount)) {
+  if (std::optional<SimplifiedTriangles> stored = load(path, key, vertexCount)) {
     ++loaded_;
-    return WarpSource(panorama, view.position, yaw, options, &*stored);
+    return WarpSource(panorama, view.position, yaw, options, std::move(stored));
   }
   WarpSource source(panorama, view.position, yaw, options);
   ++simplified_;
@@ -112,7 +112,8 @@ std::optional<SimplifiedTriangles> SimplifiedMeshStore::load(const std::filesyst
   const auto indicesAt = [&](size_t first, size_t count) {
     std::vector<uint32_t> list(count);
     // An empty list's data() may be null, which memcpy must not be given.
-    if (count > 0) std::memcpy(list.data(), bytes.data() + sizeof(Header) + first * sizeof(uint32_t), count * sizeof(uint32_t));
+    const char* from = bytes.data() + sizeof(Header) + first * sizeof(uint32_t);
+    if (count > 0) std::memcpy(list.data(), from, count * sizeof(uint32_t));
     return list;
   };
   SimplifiedTriangles triangles;

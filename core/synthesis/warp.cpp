@@ -75,7 +75,7 @@ void WarpSource::triangleVertices(uint32_t triangle, uint32_t vertices[3]) const
 }
 
 WarpSource::WarpSource(const Panorama& panorama, glm::vec3 position, float yawRadians, const WarpOptions& options,
-                       const SimplifiedTriangles* stored)
+                       std::optional<SimplifiedTriangles> stored)
     : width_(panorama.width()), height_(panorama.height()), position_(position),
       projection_{panorama.width(), panorama.height(), yawRadians} {
   TRIWALK_CHECK(width_ >= 2 && height_ >= 2, "panorama too small to warp");
@@ -162,7 +162,7 @@ WarpSource::WarpSource(const Panorama& panorama, glm::vec3 position, float yawRa
   for (size_t i = 0; i < points_.size(); ++i) orphan_[i] &= uint8_t(!infinite_[i]);
   pixelVertexCount_ = uint32_t(pixels);
   if (options.mesh == SourceMesh::Simplified) {
-    adoptSimplified(panorama, stored ? *stored : simplifyKept(panorama, options.meshTolerancePixels));
+    adoptSimplified(panorama, stored ? std::move(*stored) : simplifyKept(panorama, options.meshTolerancePixels));
   }
 }
 

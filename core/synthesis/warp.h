@@ -30,6 +30,7 @@
 #include "core/image/image.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -86,7 +87,7 @@ public:
   // earlier simplification of this same source computed; they are used as
   // they are instead of simplifying again.
   WarpSource(const Panorama& panorama, glm::vec3 position, float yawRadians, const WarpOptions& options,
-             const SimplifiedTriangles* stored = nullptr);
+             std::optional<SimplifiedTriangles> stored = std::nullopt);
 
   int width() const { return width_; }
   int height() const { return height_; }

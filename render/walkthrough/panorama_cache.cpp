@@ -41,7 +41,8 @@ void PanoramaCache::loaderLoop() {
   std::unique_lock lock(mutex_);
   const auto unloaded = [&](int s) { return !ready_.count(s) && !failures_.count(s) && !residentSamples_.count(s); };
   while (true) {
-    wake_.wait(lock, [&] { return stop_ || !idleWork_.empty() || std::any_of(wanted_.begin(), wanted_.end(), unloaded); });
+    const auto work = [&] { return !idleWork_.empty() || std::any_of(wanted_.begin(), wanted_.end(), unloaded); };
+    wake_.wait(lock, [&] { return stop_ || work(); });
     if (stop_) return;
     const auto next = std::find_if(wanted_.begin(), wanted_.end(), unloaded);
     if (next == wanted_.end()) {

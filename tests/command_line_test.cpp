@@ -2,6 +2,9 @@
 // stderr and a non-zero status before any work, leaving no output behind;
 // defaults fit the data set they are given.
 
+#include "core/io/atomic_file.h"
+#include "core/io/dataset.h"
+#include "core/selection/selection.h"
 #include "tests/analytic_scene.h"
 #include "tests/test_support.h"
 
@@ -215,12 +218,49 @@ TEST_CASE("an irregular data set without paths decimates, evaluates against ever
     CHECK(row["samples"].get<int>() >= 3);
   }
   CHECK(methods == std::vector<std::string>{"initial", "uniform", "edge_collapse", "kmedoids", "random"});
+  // The selection prices its steps with the paper's inverse-distance
+  // weights; the evaluation blends as the viewer does, by reliability.
+  CHECK(decimate.out.find("distance weights") != std::string::npos);
+  CHECK(eval.out.find("reliability weights") != std::string::npos);
+  const nlohmann::json written = nlohmann::json::parse(testing::readTextFileOrEmpty(selection));
+  CHECK(written["settings"]["quality"].get<std::string>().find("distance weights") != std::string::npos);
   const RunResult render = runTriwalk(directory, "render" + data + " --selection " + selection.string() +
                                                      " --frames 2 --size 96x64 --out " + (directory / "frames").string(), true);
   INFO("render: " << render.err);
   REQUIRE(render.status == 0);
   CHECK(std::filesystem::exists(directory / "frames" / "frame_0000.png"));
   CHECK(std::filesystem::exists(directory / "frames" / "frame_0001.png"));
+}
+
+TEST_CASE("suite: each count selected with the selection's blend weights and evaluated with the evaluation's") {
+  testing::TemporaryDirectory directory;
+  const std::filesystem::path out = directory / "suite";
+  testing::writeAnalyticDataset(out / "room" / "dataset", 5, 4, 64, 6, 0.35f);  // found: no capture
+  const std::filesystem::path spec = directory / "spec.json";
+  writeTextFileAtomically(spec, R"({"format": "triwalk-suite", "width": 64, "probes": 6, "fractions": [0.3],
+                                   "scenes": [{"name": "room", "scene": "builtin"}]})");
+  auto run = [&](const std::string& options) {
+    const RunResult result = runTriwalk(directory, "suite --quiet --spec " + spec.string() + " --out " + out.string() + options);
+    INFO("suite: " << result.err);
+    REQUIRE(result.status == 0);
+    const nlohmann::json document = nlohmann::json::parse(testing::readTextFileOrEmpty(out / "suite.json"));
+    REQUIRE(document["rows"].size() == 1);
+    const nlohmann::json& row = document["rows"][0];
+    CHECK(row["samples"].get<int>() == 6);
+    CHECK(row["probe_errors"]["edge_collapse"].size() == 6);
+    CHECK(result.out.find("evaluation with errors at 64x32") != std::string::npos);
+    const std::string evaluation = result.out.substr(result.out.find("evaluation with"));
+    CHECK(evaluation.substr(0, evaluation.find('\n')).find("reliability weights") != std::string::npos);
+    return row;
+  };
+  const nlohmann::json byDefault = run("");
+  CHECK(byDefault["settings"]["quality"].get<std::string>().find("distance weights") != std::string::npos);
+  const nlohmann::json reliability = run(" --selection-blend-weights reliability");
+  CHECK(reliability["settings"]["quality"].get<std::string>().find("reliability weights") != std::string::npos);
+  // The probes and the baselines are the same; only the selection differs.
+  CHECK(reliability["probe_errors"]["uniform"] == byDefault["probe_errors"]["uniform"]);
+  const Selection written = readSelection(out / "room" / "selection_6.json", Dataset::open(out / "room" / "dataset"));
+  CHECK(written.settings["quality"].get<std::string>().find("reliability weights") != std::string::npos);
 }
 
 TEST_CASE("import and export from the command line: a round trip, its report, and bad options in one line") {

@@ -30,6 +30,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -174,6 +175,7 @@ void registerSuiteCommand(CLI::App& app) {
     bool reuseSelections = false;
     bool quiet = false;
     SelectionArguments selection;
+    std::string selectionBlendWeights = blendWeightsName(kSelectionBlendWeights);
     ErrorArguments errors;
   };
   auto arguments = std::make_shared<Arguments>();
@@ -187,7 +189,11 @@ void registerSuiteCommand(CLI::App& app) {
                     "Evaluate selections already in --out instead of decimating again");
   command->add_flag("--quiet", arguments->quiet, "No progress output from the steps");
   addSelectionOptions(*command, arguments->selection);
-  addErrorOptions(*command, arguments->errors);
+  command->add_option("--selection-blend-weights", arguments->selectionBlendWeights,
+                      "Blend weights of the errors the selection is made with (--blend-weights: those it is "
+                      "evaluated with)")
+      ->capture_default_str()->check(CLI::IsMember({"reliability", "distance"}));
+  addErrorOptions(*command, arguments->errors, BlendOptions{}.weights);
 
   command->callback([arguments] {
     const Arguments& a = *arguments;
@@ -225,32 +231,55 @@ void registerSuiteCommand(CLI::App& app) {
       const Dataset dataset = Dataset::open(datasetDirectory);
       if (dataset.probeCount() < 2) throw InputError(dataset.manifestPath().string(), "the suite needs probes");
       const TriangleErrorSettings settings = triangleErrorSettings(a.errors, dataset);
-      std::printf("== %s: %s\n", scene.name.c_str(), describeErrorSettings(settings).c_str());
+      TriangleErrorSettings selectionErrorSettings = settings;
+      selectionErrorSettings.synthesis.blend.weights = parseBlendWeights(a.selectionBlendWeights);
+      std::printf("== %s: selection with %s\n== %s: evaluation with %s\n", scene.name.c_str(),
+                  describeErrorSettings(selectionErrorSettings).c_str(), scene.name.c_str(),
+                  describeErrorSettings(settings).c_str());
+
+      // Every count's selection first, with the selection's errors; then
+      // the evaluation's, so only one set of panoramas and warp cache is
+      // held at a time.
+      std::vector<int> counts;
+      std::vector<Selection> selections;
+      std::vector<double> selectionSeconds;
+      {
+        std::optional<DatasetTriangleErrors> selectionErrors;  // loaded when a count needs decimating
+        for (double fraction : spec.fractions) {
+          throwIfInterrupted();
+          const int count = std::max(4, int(std::lround(fraction * dataset.sampleCount())));
+          const std::filesystem::path selectionFile = directory / ("selection_" + std::to_string(count) + ".json");
+          counts.push_back(count);
+          selectionSeconds.push_back(0.0);
+          if (a.reuseSelections && std::filesystem::exists(selectionFile)) {
+            selections.push_back(readSelection(selectionFile, dataset));
+            continue;
+          }
+          std::printf("== %s: selecting %d of %d samples\n", scene.name.c_str(), count, dataset.sampleCount());
+          std::fflush(stdout);
+          if (!selectionErrors) selectionErrors.emplace(dataset, selectionErrorSettings, a.quiet);
+          const SelectionSettings selectionOptions = selectionSettings(a.selection, 0.0, count);
+          SelectionRun run = selectReferences(dataset, *selectionErrors, selectionOptions, a.quiet);
+          run.selection.settings = describeSelectionSettings(selectionOptions, selectionErrorSettings);
+          writeSelection(selectionFile, run.selection, dataset);
+          selections.push_back(std::move(run.selection));
+          selectionSeconds.back() = run.collapseSeconds + run.refinementSeconds;
+        }
+      }
+
       DatasetTriangleErrors errors(dataset, settings, a.quiet);
       const std::vector<glm::dvec2> positions = samplePositions(dataset);
       const std::vector<double> dense = probeErrors(datasetMesh(dataset, {}, dataset.manifestPath().string()), errors);
-
-      for (double fraction : spec.fractions) {
+      for (size_t f = 0; f < spec.fractions.size(); ++f) {
         throwIfInterrupted();
-        const int count = std::max(4, int(std::lround(fraction * dataset.sampleCount())));
-        const std::filesystem::path selectionFile = directory / ("selection_" + std::to_string(count) + ".json");
-        std::printf("== %s: %d of %d samples\n", scene.name.c_str(), count, dataset.sampleCount());
-        std::fflush(stdout);
+        const double fraction = spec.fractions[f];
+        const int count = counts[f];
+        const Selection& selection = selections[f];
         SuiteRow row;
         row.scene = scene.name;
         row.fraction = fraction;
         row.count = count;
-        Selection selection;
-        if (a.reuseSelections && std::filesystem::exists(selectionFile)) {
-          selection = readSelection(selectionFile, dataset);
-        } else {
-          const SelectionSettings selectionOptions = selectionSettings(a.selection, 0.0, count);
-          SelectionRun run = selectReferences(dataset, errors, selectionOptions, a.quiet);
-          run.selection.settings = describeSelectionSettings(selectionOptions, settings);
-          writeSelection(selectionFile, run.selection, dataset);
-          selection = std::move(run.selection);
-          row.selectionSeconds = run.collapseSeconds + run.refinementSeconds;
-        }
+        row.selectionSeconds = selectionSeconds[f];
         const ViewMesh uniform = datasetMesh(dataset, uniformSelection(dataset, count), "uniform baseline");
         row.uniformCount = uniform.vertexCount();
         const std::vector<double> edgeCollapse = probeErrors(selectionMesh(selection, dataset), errors);
@@ -274,11 +303,11 @@ void registerSuiteCommand(CLI::App& app) {
                     formatPercent(row.versusKMedoids).c_str(), 100.0 * row.gapClosed);
         std::fflush(stdout);
         results.push_back({{"scene", scene.name},
-                           {"settings", describeSelectionSettings(selectionSettings(a.selection, 0.0, count), settings)},
+                           {"settings", selection.settings},
                            {"fraction", fraction},
                            {"samples", count},
                            {"uniform_samples", row.uniformCount},
-                           {"selection", selectionFile.filename().string()},
+                           {"selection", "selection_" + std::to_string(count) + ".json"},
                            {"selection_seconds", row.selectionSeconds},
                            {"probe_errors",
                             {{"dense", dense},

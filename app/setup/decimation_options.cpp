@@ -4,7 +4,8 @@
 
 namespace triwalk {
 
-void addErrorOptions(CLI::App& command, ErrorArguments& arguments) {
+void addErrorOptions(CLI::App& command, ErrorArguments& arguments, BlendWeights weights) {
+  arguments.quality.blendWeights = blendWeightsName(weights);
   command.add_option("--error-width", arguments.width,
                      "Panorama width errors are computed at (divides the data set's width; default: the largest such "
                      "width not above " + std::to_string(kDefaultErrorWidth) + ")")

@@ -17,7 +17,9 @@ struct ErrorArguments {
   QualityArguments quality;
 };
 
-void addErrorOptions(CLI::App& command, ErrorArguments& arguments);
+// weights: the command's default --blend-weights (kSelectionBlendWeights
+// for decimate, the reconstruction's for eval and the suite's evaluation).
+void addErrorOptions(CLI::App& command, ErrorArguments& arguments, BlendWeights weights);
 
 // How references are selected, apart from the stopping rule (threshold
 // and target), which decimate and suite set their own way.

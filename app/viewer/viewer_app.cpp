@@ -60,11 +60,12 @@ public:
     TriangleErrorSettings errorSettings;
     errorSettings.width = errorWidthFor(dataset_, options.errorWidth);
     errorSettings.synthesis = options.synthesis;
-    // --holes and --source-mesh choose what the walker sees; live
-    // decimation measures its errors as decimate does by default, so its
-    // steps match the command's.
+    // --holes, --source-mesh and --blend-weights choose what the walker
+    // sees; live decimation measures its errors as decimate does by
+    // default, so its steps match the command's.
     errorSettings.synthesis.holes = kDefaultErrorHoles;
     errorSettings.synthesis.warp.mesh = WarpOptions{}.mesh;
+    errorSettings.synthesis.blend.weights = kSelectionBlendWeights;
     session_ = std::make_unique<DecimationSession>(dataset_, errorSettings, DecimationOptions{}, selection);
     state_.dataset = &dataset_;
     state_.session = session_.get();

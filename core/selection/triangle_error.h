@@ -72,6 +72,18 @@ int errorWidthFor(const Dataset& dataset, int requested);
 // "Hole filling", has both measured.
 inline constexpr HoleMode kDefaultErrorHoles = HoleMode::Black;
 
+// The blend weights the selection prices collapses and refinement steps
+// with unless asked (decimate, the suite's selections, the viewer's live
+// decimation): the paper's inverse distance, while frames and evaluation
+// blend by reliability. The reliability weights lean on whichever
+// reference sampled a surface best, so they hide how far a view is from
+// its references; the selection's job is to place references, and the
+// distance weights keep that cost visible. Measured on the six-scene
+// suite: decimating with distance and evaluating with reliability beat
+// decimating with reliability on 11 of 18 rows (docs/RESULTS.md, "Rerun
+// with blend weights by reliability").
+inline constexpr BlendWeights kSelectionBlendWeights = BlendWeights::Distance;
+
 struct TriangleErrorSettings {
   int width = kDefaultErrorWidth;  // panorama width the errors are computed at
   size_t layerCacheBytes = defaultLayerCacheBytes();  // warped layers kept for reuse

@@ -4,20 +4,12 @@
 
 namespace triwalk {
 
-namespace {
-
 std::array<float, kSrgbTableIntervals + 2> makeSrgbTable() {
   std::array<float, kSrgbTableIntervals + 2> table{};
   for (int i = 0; i <= kSrgbTableIntervals; ++i) table[size_t(i)] = linearToSrgb(float(i) / kSrgbTableIntervals);
   table[kSrgbTableIntervals + 1] = table[kSrgbTableIntervals];
   return table;
 }
-
-const std::array<float, kSrgbTableIntervals + 2> gSrgbTable = makeSrgbTable();
-
-}  // namespace
-
-const float* srgbTable() { return gSrgbTable.data(); }
 
 glm::vec3 falseColor(float t) {
   // Polynomial approximation of Google's Turbo colormap (Apache-2.0 published

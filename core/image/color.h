@@ -5,6 +5,7 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace triwalk {
@@ -26,8 +27,13 @@ inline glm::vec3 displayColor(glm::vec3 linear) {
 // linearToSrgb through a table (4096 intervals, linear interpolation; at
 // most 2e-5 from the exact curve): the error measure converts every pixel
 // of every reconstruction.
-const float* srgbTable();  // 4098 entries
 constexpr int kSrgbTableIntervals = 4096;
+std::array<float, kSrgbTableIntervals + 2> makeSrgbTable();
+// Inline, so that the per-pixel conversions below read it without a call.
+inline const float* srgbTable() {
+  static const std::array<float, kSrgbTableIntervals + 2> table = makeSrgbTable();
+  return table.data();
+}
 
 inline float linearToSrgbFast(float linear) {
   const float x = std::clamp(linear, 0.0f, 1.0f) * float(kSrgbTableIntervals);

@@ -130,13 +130,17 @@ ReconstructionError DatasetTriangleErrors::errorAt(std::span<const int> referenc
 double DatasetTriangleErrors::sampleError(const Triangle& triangle, int destination) {
   const glm::vec3 position = dataset_.sample(destination).position;
   const DestinationCamera camera = DestinationCamera::panorama(position, settings_.width, settings_.width / 2);
+  const LayerReliability reliability = settings_.synthesis.blend.weights == BlendWeights::Reliability
+                                           ? LayerReliability::Computed
+                                           : LayerReliability::Omitted;
   std::shared_ptr<const CompactLayer> layers[3];
   const CompactLayer* pointers[3];
   glm::vec3 sourcePositions[3];
   for (int k = 0; k < 3; ++k) {
     const WarpSource& source = *sources_[size_t(triangle[size_t(k)])];
-    layers[k] = layerCache_.get(triangle[size_t(k)], destination,
-                                [&] { return warpToCamera(source, camera, settings_.synthesis.warp.method); });
+    layers[k] = layerCache_.get(triangle[size_t(k)], destination, [&] {
+      return warpToCamera(source, camera, settings_.synthesis.warp.method, reliability);
+    });
     pointers[k] = layers[k].get();
     sourcePositions[k] = source.position();
   }

@@ -33,16 +33,6 @@ ErrorAccumulator::ErrorAccumulator(int width, int height, const ErrorOptions& op
   }
 }
 
-float ErrorAccumulator::add(int y, glm::vec3 reconstruction, bool hole, glm::vec3 truth) {
-  // Per pixel in float (display values in [0, 1]); rows sum in double.
-  const glm::vec3 difference = glm::abs((hole ? glm::vec3(0.0f) : reconstruction) - truth);
-  const float squared = glm::dot(difference, difference);
-  const float largest = std::max(difference.r, std::max(difference.g, difference.b));
-  rowSquared_[size_t(y)] += double(squared);
-  rowBad_[size_t(y)] += (hole || double(largest) > badThreshold_) ? 1.0 : 0.0;
-  return hole ? 1.0f : std::sqrt(squared / 3.0f);
-}
-
 ReconstructionError ErrorAccumulator::result() const {
   double weightSum = 0.0, squaredSum = 0.0, badSum = 0.0;
   for (size_t y = 0; y < rowWeight_.size(); ++y) {

@@ -44,36 +44,6 @@ const char* sourceMeshName(SourceMesh mesh) { return mesh == SourceMesh::Grid ? 
 
 // ---------------------------------------------------------------- source --
 
-void WarpSource::triangleVertices(uint32_t triangle, uint32_t vertices[3]) const {
-  if (mesh_ == SourceMesh::Simplified) {
-    for (int k = 0; k < 3; ++k) vertices[k] = triangles_[3 * size_t(triangle) + size_t(k)];
-    return;
-  }
-  const uint32_t width = uint32_t(width_);
-  const uint32_t quadTriangles = 2 * width * uint32_t(height_ - 1);
-  const uint32_t pixels = width * uint32_t(height_);
-  if (triangle < quadTriangles) {
-    const uint32_t quad = triangle / 2;
-    const uint32_t u = quad % width, v = quad / width;
-    const uint32_t u1 = (u + 1) % width;  // wraps across the source seam
-    const uint32_t a = v * width + u, b = v * width + u1, c = a + width, d = b + width;
-    if (triangle % 2 == 0) {
-      vertices[0] = a, vertices[1] = b, vertices[2] = d;
-    } else {
-      vertices[0] = a, vertices[1] = d, vertices[2] = c;
-    }
-    return;
-  }
-  const uint32_t fan = triangle - quadTriangles;
-  const uint32_t u = fan % width, u1 = (u + 1) % width;
-  if (fan < width) {
-    vertices[0] = pixels, vertices[1] = u, vertices[2] = u1;
-  } else {
-    const uint32_t lastRow = (uint32_t(height_) - 1) * width;
-    vertices[0] = pixels + 1, vertices[1] = lastRow + u1, vertices[2] = lastRow + u;
-  }
-}
-
 WarpSource::WarpSource(const Panorama& panorama, glm::vec3 position, float yawRadians, const WarpOptions& options,
                        std::optional<SimplifiedTriangles> stored)
     : width_(panorama.width()), height_(panorama.height()), position_(position),
@@ -379,6 +349,18 @@ struct PixelRange {
   int x0, x1, y0, y1;
 };
 
+// floor and ceil as ints without a library call, for the bounded image
+// coordinates of a panorama (exact wherever the int can hold the result).
+int floorToInt(double x) {
+  const int truncated = int(x);
+  return truncated - int(x < double(truncated));
+}
+
+int ceilToInt(double x) {
+  const int truncated = int(x);
+  return truncated + int(x > double(truncated));
+}
+
 PixelRange sphericalRange(const ProjectedVertex* v[3], bool atInfinity, const DirectionTable& directions, int width,
                           int height) {
   double minY = 1e30, maxY = -1e30;
@@ -391,7 +373,9 @@ PixelRange sphericalRange(const ProjectedVertex* v[3], bool atInfinity, const Di
   // pole; then the steps add up to a whole turn instead of none. This holds
   // for triangles of any size, not only the grid's pixel-sized ones.
   const auto shortestStep = [width](double from, double to) {
-    const double step = std::fmod(to - from, double(width));
+    // fmod is the identity below the width (and exact), the common case.
+    const double difference = to - from;
+    const double step = std::abs(difference) < double(width) ? difference : std::fmod(difference, double(width));
     return step >= 0.5 * width ? step - width : step < -0.5 * width ? step + width : step;
   };
   double xs[3] = {v[0]->screen.x, 0.0, 0.0};
@@ -409,8 +393,8 @@ PixelRange sphericalRange(const ProjectedVertex* v[3], bool atInfinity, const Di
   const double longitudeSpan = (maxX - minX) * 2.0 * pi / width;
   const double bulgeRows = longitudeSpan * longitudeSpan / 4.0 *
                            directions.tanLatitude[size_t(std::clamp(rowsFromPole, 0, height / 2))] * height / pi;
-  const double slackAbove = minY - (std::floor(minY - 0.5) + 0.5);  // to the row centre above the vertices
-  const double slackBelow = (std::ceil(maxY - 0.5) + 0.5) - maxY;   // to the row centre below them
+  const double slackAbove = minY - (double(floorToInt(minY - 0.5)) + 0.5);  // to the row centre above the vertices
+  const double slackBelow = (double(ceilToInt(maxY - 0.5)) + 0.5) - maxY;   // to the row centre below them
   if (rowsFromPole < 2 || bulgeRows >= std::min(slackAbove, slackBelow) - 0.01) {
     for (int i = 0; i < 3; ++i) {
       const glm::dvec3 a = glm::normalize(v[i]->relative), b = glm::normalize(v[(i + 1) % 3]->relative);
@@ -443,11 +427,11 @@ PixelRange sphericalRange(const ProjectedVertex* v[3], bool atInfinity, const Di
     if (north || south) minX = 0.0, maxX = width;
   }
   PixelRange range;
-  range.x0 = int(std::ceil(minX - 0.5 - margin));
-  range.x1 = int(std::floor(maxX - 0.5 + margin));
+  range.x0 = ceilToInt(minX - 0.5 - margin);
+  range.x1 = floorToInt(maxX - 0.5 + margin);
   if (range.x1 - range.x0 >= width) range.x0 = 0, range.x1 = width - 1;
-  range.y0 = std::max(0, int(std::ceil(minY - 0.5 - margin)));
-  range.y1 = std::min(height - 1, int(std::floor(maxY - 0.5 + margin)));
+  range.y0 = std::max(0, ceilToInt(minY - 0.5 - margin));
+  range.y1 = std::min(height - 1, floorToInt(maxY - 0.5 + margin));
   return range;
 }
 
@@ -521,7 +505,7 @@ float distanceFromInverse(float inverseDistance) {
 void splatPoint(const ProjectedVertex& p, uint32_t vertex, int width, int height, bool wrap, std::vector<uint64_t>& zBuffer) {
   if (!p.valid) return;
   int x = int(std::floor(p.screen.x)), y = int(std::floor(p.screen.y));
-  if (wrap) x = (x % width + width) % width;
+  if (wrap) x = x < 0 ? x + width : x >= width ? x - width : x;  // screen x lies in [0, width]
   if (x < 0 || y < 0 || x >= width || y >= height) return;
   atomicMin(zBuffer[size_t(y) * size_t(width) + size_t(x)],
             makeKey(distanceFromInverse(p.inverseDistance), (vertex << 2) | kPointPayload));
@@ -531,7 +515,8 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 
 }  // namespace
 
-WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destination, WarpMethod method) {
+WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destination, WarpMethod method,
+                       LayerReliability reliability) {
   WarpTimings timings;
   auto stageStart = Clock::now();
   const int width = destination.width(), height = destination.height();
@@ -584,7 +569,7 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
           if (triangle.degenerate()) continue;
           for (int y = range.y0; y <= range.y1; ++y) {
             for (int column = range.x0; column <= range.x1; ++column) {
-              const int x = (column % width + width) % width;
+              const int x = column < 0 ? column + width : column >= width ? column - width : column;
               if (!triangle.covers(directions->at(x, y), coverage)) continue;
               atomicMin(zBuffer[size_t(y) * size_t(width) + size_t(x)],
                         makeKey(distanceFromInverse(coverage.inverseDistance), payload));
@@ -610,9 +595,13 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
   stageStart = Clock::now();
 
   // Resolve: interpolate the winner's attributes at each pixel centre.
-  WarpLayer layer{ColorImage(width, height), ScalarImage(width, height, std::numeric_limits<float>::infinity()),
-                  std::vector<uint8_t>(size_t(width) * size_t(height), 0), rasterized.load(), WarpTimings{},
-                  std::vector<float>(size_t(width) * size_t(height), 1.0f)};
+  WarpLayer layer{
+      ColorImage(width, height),
+      ScalarImage(width, height, std::numeric_limits<float>::infinity()),
+      std::vector<uint8_t>(size_t(width) * size_t(height), 0),
+      rasterized.load(),
+      WarpTimings{},
+      std::vector<float>(reliability == LayerReliability::Computed ? size_t(width) * size_t(height) : 0, 1.0f)};
   tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y != rows.end(); ++y) {
       for (int x = 0; x < width; ++x) {
@@ -646,7 +635,7 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
           for (int k = 0; k < 3; ++k) color += float(coverage.weights[k]) * source.color(indices[k]);
           layer.color.pixels[i] = color;
         }
-        if (!atInfinity) {
+        if (!atInfinity && reliability == LayerReliability::Computed) {
           layer.reliability[i] = warpReliability(point, glm::cross(b - a, c - a), source.position(), destination.position);
         }
       }

@@ -138,6 +138,38 @@ private:
   SimplifiedTriangles simplifiedTriangles_;
 };
 
+// Defined here so that the warp's raster loop, which calls it for every
+// triangle, can inline it.
+inline void WarpSource::triangleVertices(uint32_t triangle, uint32_t vertices[3]) const {
+  if (mesh_ == SourceMesh::Simplified) {
+    for (int k = 0; k < 3; ++k) vertices[k] = triangles_[3 * size_t(triangle) + size_t(k)];
+    return;
+  }
+  const uint32_t width = uint32_t(width_);
+  const uint32_t quadTriangles = 2 * width * uint32_t(height_ - 1);
+  const uint32_t pixels = width * uint32_t(height_);
+  if (triangle < quadTriangles) {
+    const uint32_t quad = triangle / 2;
+    const uint32_t u = quad % width, v = quad / width;
+    const uint32_t u1 = (u + 1) % width;  // wraps across the source seam
+    const uint32_t a = v * width + u, b = v * width + u1, c = a + width, d = b + width;
+    if (triangle % 2 == 0) {
+      vertices[0] = a, vertices[1] = b, vertices[2] = d;
+    } else {
+      vertices[0] = a, vertices[1] = d, vertices[2] = c;
+    }
+    return;
+  }
+  const uint32_t fan = triangle - quadTriangles;
+  const uint32_t u = fan % width, u1 = (u + 1) % width;
+  if (fan < width) {
+    vertices[0] = pixels, vertices[1] = u, vertices[2] = u1;
+  } else {
+    const uint32_t lastRow = (uint32_t(height_) - 1) * width;
+    vertices[0] = pixels + 1, vertices[1] = lastRow + u1, vertices[2] = lastRow + u;
+  }
+}
+
 // A destination camera: an equirectangular panorama at a position, or a
 // pinhole camera.
 struct DestinationCamera {
@@ -178,6 +210,11 @@ struct WarpLayer {
   float reliabilityAt(size_t pixel) const { return reliability.empty() ? 1.0f : reliability[pixel]; }
 };
 
-WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destination, WarpMethod method);
+// Whether a layer carries its per-pixel reliability: only the blend by
+// reliability reads it (a tenth of a warp's time to compute).
+enum class LayerReliability { Computed, Omitted };
+
+WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destination, WarpMethod method,
+                       LayerReliability reliability = LayerReliability::Computed);
 
 }  // namespace triwalk

@@ -7,7 +7,8 @@
 
 namespace triwalk {
 
-CompactLayer::CompactLayer(const WarpLayer& layer) : values_(4 * layer.covered.size()), reliability_(layer.covered.size()) {
+CompactLayer::CompactLayer(const WarpLayer& layer)
+    : values_(4 * layer.covered.size()), reliability_(layer.reliability.empty() ? 0 : layer.covered.size()) {
   const Imath::half notCovered(std::numeric_limits<float>::quiet_NaN());
   for (size_t i = 0; i < layer.covered.size(); ++i) {
     const glm::vec3 color = layer.color.pixels[i];
@@ -15,8 +16,8 @@ CompactLayer::CompactLayer(const WarpLayer& layer) : values_(4 * layer.covered.s
     values_[4 * i + 1] = Imath::half(color.g);
     values_[4 * i + 2] = Imath::half(color.b);
     values_[4 * i + 3] = layer.covered[i] ? Imath::half(layer.distance.pixels[i]) : notCovered;
-    reliability_[i] = Imath::half(layer.reliabilityAt(i));
   }
+  for (size_t i = 0; i < reliability_.size(); ++i) reliability_[i] = Imath::half(layer.reliability[i]);
 }
 
 size_t WarpLayerCache::bytes() const {

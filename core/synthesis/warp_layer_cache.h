@@ -21,7 +21,8 @@
 namespace triwalk {
 
 // A warped layer in half floats: per pixel linear r, g, b and the distance
-// (NaN where the source put nothing, +inf for sky), and the reliability.
+// (NaN where the source put nothing, +inf for sky), and the reliability
+// when the layer has one.
 // Read through the same per-pixel view as WarpLayer, for the blend.
 class CompactLayer {
 public:
@@ -33,7 +34,7 @@ public:
     const Imath::half* v = &values_[4 * pixel];
     return {float(v[0]), float(v[1]), float(v[2])};
   }
-  float reliabilityAt(size_t pixel) const { return float(reliability_[pixel]); }
+  float reliabilityAt(size_t pixel) const { return reliability_.empty() ? 1.0f : float(reliability_[pixel]); }
   size_t bytes() const { return (values_.size() + reliability_.size()) * sizeof(Imath::half); }
 
 private:

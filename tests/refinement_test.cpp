@@ -48,6 +48,9 @@ std::vector<glm::dvec2> grid(int columns, int rows) {
   return points;
 }
 
+// The local moves alone: within 1.5 m, up to 20 passes, no exchanges.
+const RefinementOptions kLocalOnly{1.5, 20, {}, nullptr, 0};
+
 bool contains(const Triangle& t, int sample) {
   return std::find(t.begin(), t.end(), sample) != t.end();
 }
@@ -81,7 +84,7 @@ TEST_CASE("a reference that spoils every triangle it is in moves away to the low
   FormulaErrors errors(formula);
   const std::vector<int> references = {0, 1, 4, 12, 15};
   const ViewMesh start = ViewMesh::delaunay(positions, references, "test");
-  const RefinementResult result = refineSelection(positions, start.triangles(), errors, {1.5, 8, {}});
+  const RefinementResult result = refineSelection(positions, start.triangles(), errors, kLocalOnly);
 
   // Sample 0 is in every triangle of the start, so every sample costs 11.
   CHECK(result.objectiveBefore == 11.0);
@@ -112,7 +115,7 @@ TEST_CASE("refinement lowers the mean error, logs moves that replay to the resul
   FormulaErrors errors(formula);
   const std::vector<int> references = {0, 1, 5, 6, 2};  // (0,0) (0,1) (1,0) (1,1) (0,2)
   const ViewMesh start = ViewMesh::delaunay(positions, references, "test");
-  const RefinementResult result = refineSelection(positions, start.triangles(), errors, {1.5, 20, {}});
+  const RefinementResult result = refineSelection(positions, start.triangles(), errors, kLocalOnly);
 
   REQUIRE(result.moves.size() >= 3);
   CHECK(result.objectiveAfter < 0.6 * result.objectiveBefore);
@@ -139,7 +142,79 @@ TEST_CASE("refinement lowers the mean error, logs moves that replay to the resul
   CHECK(replayed == result.triangles);
   CHECK(replayBackward(result.triangles, result.moves, result.moves.size()) == start.triangles());
   // A second refinement from the result finds nothing to move.
-  CHECK(refineSelection(positions, final.triangles(), errors, {1.5, 20, {}}).moves.empty());
+  CHECK(refineSelection(positions, final.triangles(), errors, kLocalOnly).moves.empty());
+}
+
+TEST_CASE("an exchange moves a reference where no local move reaches: across a gap") {
+  // Two 4 x 4 grids of samples 1 m apart, x 0..3 and x 8..11, 5 m between
+  // them; a reconstruction costs the distance from the destination to the
+  // nearest of its references. References: the corners of the left grid
+  // and two inside it, and the right grid's two far corners, so the right
+  // grid is served from 3 to 8 m away. No local move (1.5 m) crosses the
+  // gap; an exchange takes a left reference to the right grid.
+  std::vector<glm::dvec2> positions;
+  for (const double left : {0.0, 8.0}) {
+    for (int x = 0; x < 4; ++x) {
+      for (int y = 0; y < 4; ++y) positions.emplace_back(left + x, double(y));
+    }
+  }
+  const FormulaErrors::Formula formula = [&](const Triangle& t, int destination) {
+    double nearest = 1e9;
+    for (int r : t) nearest = std::min(nearest, glm::length(positions[size_t(r)] - positions[size_t(destination)]));
+    return nearest;
+  };
+  auto at = [](int x, int y) { return x < 8 ? x * 4 + y : 16 + (x - 8) * 4 + y; };
+  const std::vector<int> references = {at(0, 0), at(0, 3), at(3, 0),  at(3, 3),
+                                       at(1, 1), at(2, 2), at(11, 0), at(11, 3)};
+  const ViewMesh start = ViewMesh::delaunay(positions, references, "test");
+  FormulaErrors withExchanges(formula), localOnly(formula);
+  const RefinementResult exchanged =
+      refineSelection(positions, start.triangles(), withExchanges, {1.5, 20, {}, nullptr, {}});
+  const RefinementResult local = refineSelection(positions, start.triangles(), localOnly, kLocalOnly);
+
+  REQUIRE(exchanged.exchanges >= 1);
+  // Some move took a reference from the left grid to the right one.
+  CHECK(std::any_of(exchanged.moves.begin(), exchanged.moves.end(), [&](const Collapse& move) {
+    return positions[size_t(move.first)].x < 4.0 && positions[size_t(move.placement)].x > 7.0;
+  }));
+  CHECK(std::none_of(local.moves.begin(), local.moves.end(), [&](const Collapse& move) {
+    return positions[size_t(move.first)].x < 4.0 && positions[size_t(move.placement)].x > 7.0;
+  }));
+  // The objective falls with every move, ends where it says, and below
+  // where local moves alone end.
+  double previous = exchanged.objectiveBefore;
+  for (const Collapse& move : exchanged.moves) {
+    CHECK(move.cost < previous);
+    previous = move.cost;
+  }
+  const ViewMesh final(positions, exchanged.triangles);
+  CHECK(final.vertexCount() == 8);
+  CHECK(exchanged.objectiveAfter == doctest::Approx(meanError(final, formula)));
+  CHECK(exchanged.objectiveAfter < 0.9 * local.objectiveAfter);
+  // The log replays from the start to the result.
+  CHECK(replayForward(start.triangles(), exchanged.moves, exchanged.moves.size()) == exchanged.triangles);
+  // No more exchanges than asked.
+  FormulaErrors capped(formula);
+  CHECK(refineSelection(positions, start.triangles(), capped, {1.5, 20, {}, nullptr, 0}).exchanges == 0);
+}
+
+TEST_CASE("exchange candidates are free samples spread over the area") {
+  const std::vector<glm::dvec2> positions = grid(10, 10);  // 1 m apart
+  const std::vector<int> references = {0, 11, 22};
+  const std::vector<int> candidates = exchangeCandidates(positions, references);
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    CHECK(std::find(references.begin(), references.end(), candidates[i]) == references.end());
+    for (size_t j = 0; j < i; ++j)
+      CHECK(glm::length(positions[size_t(candidates[i])] - positions[size_t(candidates[j])]) >= 1.5);
+  }
+  // Every free sample has a candidate within two spacings: none of the
+  // area is left out.
+  for (int s = 0; s < 100; ++s) {
+    double nearest = 1e9;
+    for (int c : candidates) nearest = std::min(nearest, glm::length(positions[size_t(c)] - positions[size_t(s)]));
+    CHECK(nearest < 2.0);
+  }
+  CHECK(candidates.size() < 40);  // far fewer than the 97 free samples
 }
 
 TEST_CASE("refinement with radius 0 changes nothing, and Ctrl-C stops it") {
@@ -148,13 +223,13 @@ TEST_CASE("refinement with radius 0 changes nothing, and Ctrl-C stops it") {
       [](const Triangle& t, int destination) { return double((t[0] + t[1] + t[2] + destination) % 7); });
   const std::vector<int> references = {0, 3, 20, 23, 9};
   const ViewMesh start = ViewMesh::delaunay(positions, references, "test");
-  const RefinementResult unchanged = refineSelection(positions, start.triangles(), errors, {0.0, 8, {}});
+  const RefinementResult unchanged = refineSelection(positions, start.triangles(), errors, {0.0, 8, {}, nullptr, {}});
   CHECK(unchanged.moves.empty());
   CHECK(unchanged.triangles == start.triangles());
   CHECK(unchanged.objectiveAfter == unchanged.objectiveBefore);
 
   requestInterrupt();
-  CHECK_THROWS_AS(refineSelection(positions, start.triangles(), errors, {1.5, 8, {}}), Interrupted);
+  CHECK_THROWS_AS(refineSelection(positions, start.triangles(), errors, {1.5, 8, {}, nullptr, {}}), Interrupted);
   clearInterrupt();
 }
 
@@ -267,7 +342,7 @@ TEST_CASE(
     EdgeCollapseDecimator decimator(initial, DecimationErrors{&errors, &errors}, options);
     decimator.run();
     const ViewMesh decimated = decimator.mesh();
-    RefinementResult refinement = refineSelection(positions, decimated.triangles(), errors, {10.0, 8, {}});
+    RefinementResult refinement = refineSelection(positions, decimated.triangles(), errors, {10.0, 8, {}, nullptr, {}});
     std::vector<Collapse> log = decimator.log();
     log.insert(log.end(), refinement.moves.begin(), refinement.moves.end());
     return std::pair(log, refinement);

@@ -8,9 +8,11 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
+#include <tuple>
 
 namespace triwalk {
 
@@ -117,87 +119,242 @@ double neighbourhoodRadius(std::span<const glm::dvec2> positions) {
   return 1.01 * eighth[quartile];
 }
 
-RefinementResult refineSelection(std::span<const glm::dvec2> positions, const std::vector<Triangle>& current,
-                                 ReconstructionErrorSource& errors, const RefinementOptions& options,
-                                 ProgressReporter* progress) {
-  RefinementResult result;
-  result.radius = options.radius.value_or(neighbourhoodRadius(positions));
-  ObjectiveEvaluator evaluator(positions, options.sampleWeights, options.region, errors, result);
-  TRIWALK_CHECK(!current.empty(), "refining a selection needs its triangles");
-  ViewMesh mesh(std::vector<glm::dvec2>(positions.begin(), positions.end()), current, sharedRegion(options.region));
-  std::vector<int> references = mesh.vertices();  // sorted
-  std::vector<SampleReconstruction> assignment = evaluator.assignments(mesh);
-  evaluator.compute({assignment});
-  double objective = evaluator.mean(assignment);
-  result.objectiveBefore = objective;
-  result.triangles = mesh.triangles();
-  if (result.radius <= 0.0) {
-    result.objectiveAfter = objective;
-    return result;
+std::vector<int> exchangeCandidates(std::span<const glm::dvec2> positions, std::span<const int> references) {
+  std::vector<double> nearest(positions.size(), std::numeric_limits<double>::infinity());
+  tbb::parallel_for(size_t(0), positions.size(), [&](size_t i) {
+    for (size_t j = 0; j < positions.size(); ++j) {
+      if (j != i) nearest[i] = std::min(nearest[i], glm::length(positions[j] - positions[i]));
+    }
+  });
+  if (positions.size() < 2) return {};
+  std::nth_element(nearest.begin(), nearest.begin() + std::ptrdiff_t(nearest.size() / 2), nearest.end());
+  const double apart = 1.5 * nearest[nearest.size() / 2];
+  std::vector<int> candidates;
+  for (int c = 0; c < int(positions.size()); ++c) {
+    if (std::find(references.begin(), references.end(), c) != references.end()) continue;
+    const bool crowded = std::any_of(candidates.begin(), candidates.end(), [&](int other) {
+      return glm::length(positions[size_t(other)] - positions[size_t(c)]) < apart;
+    });
+    if (!crowded) candidates.push_back(c);
+  }
+  return candidates;
+}
+
+namespace {
+
+// The selection being refined: its references (sorted), their mesh and the
+// objective there, and the log of what moved.
+class Refinement {
+public:
+  Refinement(std::span<const glm::dvec2> positions, const std::vector<Triangle>& current,
+             ReconstructionErrorSource& errors, const RefinementOptions& options, RefinementResult& result)
+      : positions_(positions),
+        options_(options),
+        evaluator_(positions, options.sampleWeights, options.region, errors, result),
+        mesh_(std::vector<glm::dvec2>(positions.begin(), positions.end()), current, sharedRegion(options.region)),
+        references_(mesh_.vertices()),
+        result_(result) {
+    const std::vector<SampleReconstruction> assignment = evaluator_.assignments(mesh_);
+    evaluator_.compute({assignment});
+    objective_ = evaluator_.mean(assignment);
   }
 
-  std::set<int> flagged(references.begin(), references.end());
-  while (!flagged.empty() && result.passes < options.maxPasses) {
-    ++result.passes;
-    const std::vector<int> examine(flagged.begin(), flagged.end());
-    flagged.clear();
-    if (progress) progress->setTotal(progress->done() + examine.size());  // time left: of this pass
-    for (int moving : examine) {
-      throwIfInterrupted();
-      if (progress) progress->advance();
-      const auto at = std::find(references.begin(), references.end(), moving);
-      if (at == references.end()) continue;  // moved away earlier in this pass
-      std::vector<int> candidates;
-      std::vector<ViewMesh> meshes;
-      std::vector<std::vector<SampleReconstruction>> assignments;
-      for (int c = 0; c < int(positions.size()); ++c) {
-        if (std::binary_search(references.begin(), references.end(), c)) continue;
-        if (glm::length(positions[size_t(c)] - positions[size_t(moving)]) > result.radius) continue;
-        std::vector<int> moved = references;
-        moved[size_t(at - references.begin())] = c;
-        std::sort(moved.begin(), moved.end());
-        std::optional<ViewMesh> candidate = evaluator.triangulate(moved);
-        if (!candidate) continue;
-        candidates.push_back(c);
-        assignments.push_back(evaluator.assignments(*candidate));
-        meshes.push_back(std::move(*candidate));
-      }
-      evaluator.compute(assignments);
-      int best = -1;
-      double bestObjective = objective;
-      for (size_t k = 0; k < candidates.size(); ++k) {
-        const double value = evaluator.mean(assignments[k]);
-        if (value < bestObjective) bestObjective = value, best = int(k);
-      }
-      if (best < 0) continue;
+  double objective() const { return objective_; }
+  const ViewMesh& mesh() const { return mesh_; }
 
-      const ViewMesh& next = meshes[size_t(best)];
-      Collapse move;
-      move.first = moving;
-      move.placement = candidates[size_t(best)];
-      move.kind = PlacementKind::Relocation;
-      move.cost = bestObjective;
-      move.error = bestObjective;
-      move.removed = without(mesh.triangles(), next.triangles());
-      move.added = without(next.triangles(), mesh.triangles());
-      result.moves.push_back(std::move(move));
-      for (int v : neighboursOf(mesh, moving)) flagged.insert(v);
-      for (int v : neighboursOf(next, candidates[size_t(best)])) flagged.insert(v);
-      flagged.insert(candidates[size_t(best)]);
-      *at = candidates[size_t(best)];
-      std::sort(references.begin(), references.end());
-      mesh = next;
-      objective = bestObjective;
-      if (progress) {
-        char status[96];
-        std::snprintf(status, sizeof status, "pass %d, %zu moves, mean error %.4f", result.passes, result.moves.size(),
-                      objective);
-        progress->setStatus(status);
+  // Local moves until none helps; then, as long as an exchange helps (at
+  // most maxExchanges), the exchange and local moves around it again. So
+  // the result is never worse than local moves alone, and no single move
+  // of either kind improves it.
+  void refine(int maxExchanges, ProgressReporter* progress) {
+    moveLocally(std::set<int>(references_.begin(), references_.end()), progress);
+    while (result_.exchanges < maxExchanges) {
+      throwIfInterrupted();
+      const ViewMesh before = mesh_;
+      const std::optional<std::pair<int, int>> exchanged = bestExchange();
+      if (!exchanged) break;
+      ++result_.exchanges;
+      const auto [removed, added] = *exchanged;
+      std::set<int> flagged = {added};
+      for (int v : neighboursOf(before, removed)) flagged.insert(v);
+      for (int v : neighboursOf(mesh_, added)) flagged.insert(v);
+      std::erase_if(flagged, [&](int v) { return !std::binary_search(references_.begin(), references_.end(), v); });
+      moveLocally(flagged, progress);
+    }
+  }
+
+private:
+  // Local moves within radius, pass after pass over the flagged references
+  // (at most maxPasses).
+  void moveLocally(std::set<int> flagged, ProgressReporter* progress) {
+    int passes = 0;
+    while (!flagged.empty() && passes < options_.maxPasses) {
+      ++passes;
+      ++result_.passes;
+      ++result_.passes;
+      const std::vector<int> examine(flagged.begin(), flagged.end());
+      flagged.clear();
+      if (progress) progress->setTotal(progress->done() + examine.size());  // time left: of this pass
+      for (int moving : examine) {
+        throwIfInterrupted();
+        if (progress) progress->advance();
+        if (!std::binary_search(references_.begin(), references_.end(), moving))
+          continue;  // moved away earlier in this pass
+        std::vector<std::vector<int>> tries;
+        for (int c = 0; c < int(positions_.size()); ++c) {
+          if (std::binary_search(references_.begin(), references_.end(), c)) continue;
+          if (glm::length(positions_[size_t(c)] - positions_[size_t(moving)]) > result_.radius) continue;
+          tries.push_back(replaced(moving, c));
+        }
+        const std::vector<Candidate> candidates = evaluate(tries);
+        const Candidate* best = nullptr;
+        for (const Candidate& candidate : candidates) {
+          if (candidate.objective < (best ? best->objective : objective_)) best = &candidate;
+        }
+        if (!best) continue;
+        const int placement = best->placement;
+        for (int v : neighboursOf(mesh_, moving)) flagged.insert(v);
+        for (int v : neighboursOf(*best->mesh, placement)) flagged.insert(v);
+        flagged.insert(placement);
+        accept(moving, *best);
+        if (progress) {
+          char status[96];
+          std::snprintf(status, sizeof status, "%d exchanges, %zu moves, mean error %.4f", result_.exchanges,
+                        result_.moves.size(), objective_);
+          progress->setStatus(status);
+        }
       }
     }
   }
-  result.objectiveAfter = objective;
-  result.triangles = mesh.triangles();
+
+  // A set of references tried: its mesh (none if no triangle of it lies
+  // in the region), the objective there, and the sample it added (-1 if
+  // none).
+  struct Candidate {
+    std::vector<int> references;
+    std::optional<ViewMesh> mesh;
+    double objective = std::numeric_limits<double>::infinity();
+    int placement = -1;
+  };
+
+  // The references with one replaced (from -1: one added; to -1: one removed), sorted.
+  std::vector<int> replaced(int from, int to) const {
+    std::vector<int> result;
+    for (int r : references_) {
+      if (r != from) result.push_back(r);
+    }
+    if (to >= 0) result.push_back(to);
+    std::sort(result.begin(), result.end());
+    return result;
+  }
+
+  // Triangulates and scores reference sets, the errors they need in one
+  // parallel batch; results in the order given.
+  std::vector<Candidate> evaluate(const std::vector<std::vector<int>>& sets) {
+    std::vector<Candidate> candidates(sets.size());
+    std::vector<std::vector<SampleReconstruction>> assignments(sets.size());
+    tbb::parallel_for(size_t(0), sets.size(), [&](size_t k) {
+      Candidate& candidate = candidates[k];
+      candidate.references = sets[k];
+      for (int r : sets[k]) {
+        if (!std::binary_search(references_.begin(), references_.end(), r)) candidate.placement = r;
+      }
+      candidate.mesh = evaluator_.triangulate(sets[k]);
+      if (candidate.mesh) assignments[k] = evaluator_.assignments(*candidate.mesh);
+    });
+    evaluator_.compute(assignments);
+    for (size_t k = 0; k < sets.size(); ++k) {
+      if (candidates[k].mesh) candidates[k].objective = evaluator_.mean(assignments[k]);
+    }
+    return candidates;
+  }
+
+  // The best exchange, made if it lowers the objective; its (reference,
+  // sample), or nothing. Losses and gains are measured against the
+  // Delaunay mesh of the references, which the first exchange replaces
+  // the decimated mesh with.
+  std::optional<std::pair<int, int>> bestExchange() {
+    constexpr size_t kRemovals = 8, kInsertions = 16, kPairs = 16;
+    const std::vector<Candidate> base = evaluate({references_});
+    if (!base[0].mesh) return std::nullopt;
+    std::vector<std::vector<int>> sets;
+    for (int v : references_) sets.push_back(replaced(v, -1));
+    const std::vector<int> insertions = exchangeCandidates(positions_, references_);
+    for (int c : insertions) sets.push_back(replaced(-1, c));
+    const std::vector<Candidate> singles = evaluate(sets);
+    std::vector<std::pair<double, int>> losses, gains;
+    for (size_t k = 0; k < singles.size(); ++k) {
+      if (!singles[k].mesh) continue;
+      const double change = singles[k].objective - base[0].objective;
+      if (k < references_.size()) {
+        losses.emplace_back(change, references_[k]);
+      } else {
+        gains.emplace_back(change, insertions[k - references_.size()]);
+      }
+    }
+    std::sort(losses.begin(), losses.end());
+    std::sort(gains.begin(), gains.end());
+    losses.resize(std::min(losses.size(), kRemovals));
+    gains.resize(std::min(gains.size(), kInsertions));
+    std::vector<std::tuple<double, int, int>> pairs;
+    for (const auto& [loss, v] : losses) {
+      for (const auto& [gain, c] : gains) pairs.emplace_back(loss + gain, v, c);
+    }
+    std::sort(pairs.begin(), pairs.end());
+    pairs.resize(std::min(pairs.size(), kPairs));
+    std::vector<std::vector<int>> tries;
+    for (const auto& [estimate, v, c] : pairs) tries.push_back(replaced(v, c));
+    const std::vector<Candidate> exchanged = evaluate(tries);
+    size_t best = exchanged.size();
+    for (size_t k = 0; k < exchanged.size(); ++k) {
+      if (exchanged[k].objective < (best < exchanged.size() ? exchanged[best].objective : objective_)) best = k;
+    }
+    if (best == exchanged.size()) return std::nullopt;
+    const int removed = std::get<1>(pairs[best]), added = std::get<2>(pairs[best]);
+    accept(removed, exchanged[best]);
+    return std::make_pair(removed, added);
+  }
+
+  // Makes a candidate the selection, logged as moving reference `moved`.
+  void accept(int moved, const Candidate& candidate) {
+    Collapse move;
+    move.first = moved;
+    move.placement = candidate.placement;
+    move.kind = PlacementKind::Relocation;
+    move.cost = candidate.objective;
+    move.error = candidate.objective;
+    move.removed = without(mesh_.triangles(), candidate.mesh->triangles());
+    move.added = without(candidate.mesh->triangles(), mesh_.triangles());
+    result_.moves.push_back(std::move(move));
+    references_ = candidate.references;
+    mesh_ = *candidate.mesh;
+    objective_ = candidate.objective;
+  }
+
+  std::span<const glm::dvec2> positions_;
+  const RefinementOptions& options_;
+  ObjectiveEvaluator evaluator_;
+  ViewMesh mesh_;
+  std::vector<int> references_;  // sorted
+  double objective_ = 0.0;
+  RefinementResult& result_;
+};
+
+}  // namespace
+
+RefinementResult refineSelection(std::span<const glm::dvec2> positions, const std::vector<Triangle>& current,
+                                 ReconstructionErrorSource& errors, const RefinementOptions& options,
+                                 ProgressReporter* progress) {
+  TRIWALK_CHECK(!current.empty(), "refining a selection needs its triangles");
+  RefinementResult result;
+  result.radius = options.radius.value_or(neighbourhoodRadius(positions));
+  Refinement refinement(positions, current, errors, options, result);
+  result.objectiveBefore = refinement.objective();
+  if (result.radius > 0.0) {
+    refinement.refine(options.maxExchanges.value_or(refinement.mesh().vertexCount()), progress);
+  }
+  result.objectiveAfter = refinement.objective();
+  result.triangles = refinement.mesh().triangles();
   return result;
 }
 

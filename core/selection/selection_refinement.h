@@ -1,22 +1,32 @@
 #pragma once
-// Refinement of a decimated selection at a fixed sample count: move one
-// reference at a time to a nearby free dense sample when that lowers the
+// Refinement of a decimated selection at a fixed sample count: exchange a
+// reference anywhere for a free dense sample anywhere, then move one
+// reference at a time to a nearby free sample, each time that lowers the
 // mean reconstruction error over every dense sample that is not a
 // reference (each reconstructed from the triangle around it in the
 // Delaunay triangulation of the references, the nearest triangle outside
-// the covered area, as the viewer and eval do), until no move helps.
+// the covered area, as the viewer and eval do), until nothing helps.
 //
-// Why: decimation keeps the covered region (hull corners stay, boundary
-// vertices only slide along it), so about half of a coarse selection sits
-// on the edge of the walkable area, where a panorama serves half the area
-// an interior one does. The dense samples measure what that costs, and
-// what the move gains, directly; the hull may shrink when the nearest
-// triangle reconstructs the outside well enough. docs/RESULTS.md has the
-// measurements behind the radius and the objective.
+// Why: greedy collapses never revisit a choice. A collapse only ever
+// shrinks the covered region and can never put a reference back where it
+// took the last ones away: on a floor of rooms joined by doors, the
+// collapses that were cheapest one at a time left whole rooms without a
+// reference (docs/RESULTS.md, "The selection suite"). The exchanges undo
+// such choices wherever they are; the local moves then settle each
+// reference among its neighbours. The dense samples measure what every
+// step costs and gains directly.
 //
 //   objective(S) = mean over dense samples i not in S of E(i | triangle of S around i),
 //                  weighted by each sample's share of the area
-//   repeat until no reference is flagged (or maxPasses):
+//   local moves (every reference flagged)
+//   while an exchange helps (at most maxExchanges):
+//     loss(v) = objective(S - v) - objective(S)       for every reference v
+//     gain(c) = objective(S + c) - objective(S)       for free samples c spread
+//                                                      over the area (see exchangeCandidates)
+//     for the pairs (v, c) of the lowest loss(v) + gain(c): objective(S - v + c), exactly
+//     make the lowest if it is lower than now; local moves (the references
+//     around v's old and c's new place flagged)
+//   local moves: until no reference is flagged (or maxPasses passes):
 //     for each flagged reference v, ascending:
 //       try every free sample c within radius of v: S - v + c, Delaunay
 //       keep the lowest objective if it is lower than now (ties: lower c)
@@ -45,11 +55,14 @@ struct RefinementOptions {
   // Metres a reference may move per step; 0 disables refinement. Default:
   // neighbourhoodRadius of the samples, whatever their spacing.
   std::optional<double> radius;
-  int maxPasses = 8;
+  int maxPasses = 8;                  // of local moves, each time they run
   std::vector<double> sampleWeights;  // each sample's share of the area (empty: equal), for the mean
   // The walkable region: the references are triangulated keeping only
   // triangles inside it (see ViewMesh::delaunay); null or empty: all.
   const WalkableRegion* region = nullptr;
+  // Exchanges between the local moves, at most this many; none: as many
+  // as there are references (each may go once); 0: local moves only.
+  std::optional<int> maxExchanges;
 };
 
 struct RefinementResult {
@@ -58,7 +71,8 @@ struct RefinementResult {
   double objectiveBefore = 0.0;     // of the starting triangles
   double objectiveAfter = 0.0;
   double radius = 0.0;               // the one used
-  int passes = 0;
+  int exchanges = 0;                 // moves from anywhere to anywhere
+  int passes = 0;                    // of local moves, in all
   uint64_t errorsComputed = 0;
   uint64_t cacheHits = 0;
 };
@@ -72,6 +86,14 @@ struct RefinementResult {
 // 0.5 m reached the diagonals of the built-in scene's 0.35 m lattice, only
 // two samples on a 0.31 x 0.54 m one, and none on a 1.46 m one.
 double neighbourhoodRadius(std::span<const glm::dvec2> positions);
+
+// The free samples an exchange may insert: spread over the area, no two
+// nearer than 1.5 times the samples' typical spacing (the median distance
+// to the nearest), lowest index first. The gain of an insertion varies
+// smoothly with its place, so a spread subset finds where one is worth
+// most at a third to a quarter of the cost, and the local moves place it
+// exactly.
+std::vector<int> exchangeCandidates(std::span<const glm::dvec2> positions, std::span<const int> references);
 
 // current: the selection's triangles now (its vertices are the
 // references). A move is kept only if it lowers the objective below that

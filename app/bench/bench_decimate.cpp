@@ -33,6 +33,7 @@ void benchDecimate(BenchTable& table, const Scene& scene, const std::string& dat
                            "x" + std::to_string(errorWidth / 2);
   TriangleErrorSettings settings;
   settings.width = errorWidth;
+  settings.synthesis.blend.weights = kSelectionBlendWeights;  // as decimate prices collapses
   const auto loadStart = BenchClock::now();
   // Progress on stderr (minutes of work); the table goes to stdout.
   constexpr bool kQuiet = false;
@@ -62,8 +63,8 @@ void benchDecimate(BenchTable& table, const Scene& scene, const std::string& dat
                  "; stale heap entries skipped " + std::to_string(statistics.staleEntriesSkipped)});
   table.add({"refinement wall time (references moved at the final count)", size,
              formatNumber(run.refinementSeconds, 1) + " s",
-             std::to_string(refinement.moves.size()) + " moves in " + std::to_string(refinement.passes) +
-                 " passes; dense-sample errors computed " + std::to_string(refinement.errorsComputed) + ", cached " +
+             std::to_string(refinement.moves.size()) + " moves (" + std::to_string(refinement.exchanges) +
+                 " exchanges), " + std::to_string(refinement.passes) + " passes of local moves; dense-sample errors computed " + std::to_string(refinement.errorsComputed) + ", cached " +
                  std::to_string(refinement.cacheHits) + "; mean error " + formatNumber(refinement.objectiveBefore, 4) +
                  " -> " + formatNumber(refinement.objectiveAfter, 4)});
   if (captured) std::filesystem::remove_all(directory);

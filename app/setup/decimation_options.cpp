@@ -52,6 +52,10 @@ void addSelectionOptions(CLI::App& command, SelectionArguments& arguments) {
                      "mean error over the dense samples; 0 disables (default: to any of the 8 nearest samples, "
                      "1.01 x the lower quartile of the distance to the 8th nearest)")
       ->check(nonNegativeNumber());
+  command.add_option("--exchanges", arguments.exchanges,
+                     "At most this many exchanges in the refinement, a reference anywhere for a free sample anywhere "
+                     "(default: as many as there are references; 0: local moves only)")
+      ->check(nonNegativeNumber());
 }
 
 SelectionSettings selectionSettings(const SelectionArguments& arguments, double maxError, int targetSamples) {
@@ -64,6 +68,7 @@ SelectionSettings selectionSettings(const SelectionArguments& arguments, double 
   options.fixedBoundary = arguments.fixedBoundary || options.cost == CollapseCost::Centroid;
   options.areaWeightedCost = !arguments.unweightedCost;
   settings.refinement.radius = arguments.refineRadius;
+  settings.refinement.maxExchanges = arguments.exchanges;
   return settings;
 }
 
@@ -77,6 +82,8 @@ nlohmann::json describeSelectionSettings(const SelectionSettings& settings, cons
           {"fixed_boundary", options.fixedBoundary},
           {"area_weighted_cost", options.areaWeightedCost},
           {"refine_radius", settings.refinement.radius ? nlohmann::json(*settings.refinement.radius) : nlohmann::json("auto")},
+          {"exchanges", settings.refinement.maxExchanges ? nlohmann::json(*settings.refinement.maxExchanges)
+                                                          : nlohmann::json("auto")},
           {"error_width", errors.width},
           {"quality", describeErrorSettings(errors)}};
 }

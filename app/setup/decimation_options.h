@@ -29,6 +29,7 @@ struct SelectionArguments {
   bool fixedBoundary = false;
   bool unweightedCost = false;
   std::optional<double> refineRadius;  // none: neighbourhoodRadius
+  std::optional<int> exchanges;        // none: as many as references
 };
 
 void addSelectionOptions(CLI::App& command, SelectionArguments& arguments);

@@ -198,6 +198,55 @@ TEST_CASE("an exchange moves a reference where no local move reaches: across a g
   CHECK(refineSelection(positions, start.triangles(), capped, {1.5, 20, {}, nullptr, 0}).exchanges == 0);
 }
 
+TEST_CASE("refinement starts from the Delaunay mesh of a decimated mesh's references, and is never worse than it") {
+  const std::vector<glm::dvec2> positions = grid(8, 5);
+  const std::vector<int> references = {0, 1, 5, 6, 2, 39};  // crowded at (0,0)-(1,1), and the far corner (7, 4)
+  const ViewMesh delaunay = ViewMesh::delaunay(positions, references, "test");
+  // A mesh that is not Delaunay: the Delaunay one without a triangle on
+  // its boundary, as a decimation whose boundary shrank leaves.
+  int dropped = -1;
+  for (int t = 0; t < delaunay.triangleCount() && dropped < 0; ++t) {
+    const bool onBoundary =
+        delaunay.neighbour(t, 0) < 0 || delaunay.neighbour(t, 1) < 0 || delaunay.neighbour(t, 2) < 0;
+    const Triangle& triangle = delaunay.triangles()[size_t(t)];
+    const bool keepsVertices =
+        std::all_of(triangle.begin(), triangle.end(), [&](int v) { return delaunay.trianglesAround(v).size() > 1; });
+    if (onBoundary && keepsVertices) dropped = t;
+  }
+  REQUIRE(dropped >= 0);
+  std::vector<Triangle> decimated = delaunay.triangles();
+  decimated.erase(decimated.begin() + dropped);
+
+  SUBCASE("moves are made from the Delaunay mesh and the log replays from the decimated one") {
+    const FormulaErrors::Formula formula = [&](const Triangle& t, int destination) {
+      double nearest = 1e9;
+      for (int r : t) nearest = std::min(nearest, glm::length(positions[size_t(r)] - positions[size_t(destination)]));
+      return nearest;
+    };
+    FormulaErrors errors(formula);
+    const RefinementResult result = refineSelection(positions, decimated, errors, kLocalOnly);
+    REQUIRE(!result.moves.empty());
+    CHECK(result.objectiveAfter < result.objectiveBefore);
+    CHECK(replayForward(decimated, result.moves, result.moves.size()) == result.triangles);
+    CHECK(replayBackward(result.triangles, result.moves, result.moves.size()) == decimated);
+  }
+  SUBCASE("when no move beats the decimated mesh, it is kept as it was") {
+    // Its own triangles reconstruct perfectly, any other triangle badly.
+    const FormulaErrors::Formula formula = [&](const Triangle& t, int) {
+      const bool own = std::any_of(decimated.begin(), decimated.end(),
+                                   [&](const Triangle& d) { return sortedTriangle(d) == sortedTriangle(t); });
+      return own ? 0.0 : 5.0;
+    };
+    FormulaErrors errors(formula);
+    const RefinementResult result = refineSelection(positions, decimated, errors, {1.5, 20, {}, nullptr, {}});
+    CHECK(result.moves.empty());
+    CHECK(result.exchanges == 0);
+    CHECK(result.triangles == decimated);
+    CHECK(result.objectiveBefore == 0.0);
+    CHECK(result.objectiveAfter == 0.0);
+  }
+}
+
 TEST_CASE("exchange candidates are free samples spread over the area") {
   const std::vector<glm::dvec2> positions = grid(10, 10);  // 1 m apart
   const std::vector<int> references = {0, 11, 22};

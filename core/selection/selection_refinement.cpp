@@ -153,14 +153,38 @@ public:
         evaluator_(positions, options.sampleWeights, options.region, errors, result),
         mesh_(std::vector<glm::dvec2>(positions.begin(), positions.end()), current, sharedRegion(options.region)),
         references_(mesh_.vertices()),
-        result_(result) {
+        result_(result),
+        start_(mesh_),
+        logged_(mesh_) {
     const std::vector<SampleReconstruction> assignment = evaluator_.assignments(mesh_);
     evaluator_.compute({assignment});
-    objective_ = evaluator_.mean(assignment);
+    objective_ = startObjective_ = evaluator_.mean(assignment);
   }
 
   double objective() const { return objective_; }
   const ViewMesh& mesh() const { return mesh_; }
+
+  // Moves are judged on Delaunay meshes of the references, so they start
+  // from the Delaunay mesh of the given references, even where the given
+  // mesh (a decimated one, whose boundary shrank where that paid) is
+  // better: every move from it would otherwise be compared with a mesh no
+  // move can reproduce, and none would be made. Nothing is logged yet.
+  void startFromDelaunay() {
+    const std::vector<Candidate> delaunay = evaluate({references_});
+    if (!delaunay[0].mesh) return;
+    mesh_ = *delaunay[0].mesh;
+    objective_ = delaunay[0].objective;
+  }
+
+  // Back to the given mesh, with no moves, unless the moves ended below it.
+  void keepTheBetter() {
+    if (!result_.moves.empty() && objective_ < startObjective_) return;
+    result_.moves.clear();
+    result_.exchanges = 0;
+    mesh_ = start_;
+    references_ = start_.vertices();
+    objective_ = startObjective_;
+  }
 
   // Local moves until none helps; then, as long as an exchange helps (at
   // most maxExchanges), the exchange and local moves around it again. So
@@ -323,11 +347,12 @@ private:
     move.kind = PlacementKind::Relocation;
     move.cost = candidate.objective;
     move.error = candidate.objective;
-    move.removed = without(mesh_.triangles(), candidate.mesh->triangles());
-    move.added = without(candidate.mesh->triangles(), mesh_.triangles());
+    move.removed = without(logged_.triangles(), candidate.mesh->triangles());
+    move.added = without(candidate.mesh->triangles(), logged_.triangles());
     result_.moves.push_back(std::move(move));
     references_ = candidate.references;
     mesh_ = *candidate.mesh;
+    logged_ = mesh_;
     objective_ = candidate.objective;
   }
 
@@ -338,6 +363,9 @@ private:
   std::vector<int> references_;  // sorted
   double objective_ = 0.0;
   RefinementResult& result_;
+  ViewMesh start_;  // the given mesh
+  double startObjective_ = 0.0;
+  ViewMesh logged_;  // the mesh the log has reached: the given one, then after each move
 };
 
 }  // namespace
@@ -351,7 +379,9 @@ RefinementResult refineSelection(std::span<const glm::dvec2> positions, const st
   Refinement refinement(positions, current, errors, options, result);
   result.objectiveBefore = refinement.objective();
   if (result.radius > 0.0) {
+    refinement.startFromDelaunay();
     refinement.refine(options.maxExchanges.value_or(refinement.mesh().vertexCount()), progress);
+    refinement.keepTheBetter();
   }
   result.objectiveAfter = refinement.objective();
   result.triangles = refinement.mesh().triangles();

@@ -1,7 +1,7 @@
 #pragma once
-// Refinement of a decimated selection at a fixed sample count: exchange a
-// reference anywhere for a free dense sample anywhere, then move one
-// reference at a time to a nearby free sample, each time that lowers the
+// Refinement of a decimated selection at a fixed sample count: move one
+// reference at a time to a nearby free dense sample, or exchange a
+// reference anywhere for a free sample anywhere, each time that lowers the
 // mean reconstruction error over every dense sample that is not a
 // reference (each reconstructed from the triangle around it in the
 // Delaunay triangulation of the references, the nearest triangle outside
@@ -18,6 +18,9 @@
 //
 //   objective(S) = mean over dense samples i not in S of E(i | triangle of S around i),
 //                  weighted by each sample's share of the area
+//   start from the Delaunay mesh of S (moves are judged on Delaunay meshes;
+//   a decimated mesh, whose boundary shrank where that paid, can be better
+//   than any of them and would stop every move)
 //   local moves (every reference flagged)
 //   while an exchange helps (at most maxExchanges):
 //     loss(v) = objective(S - v) - objective(S)       for every reference v
@@ -31,9 +34,12 @@
 //       try every free sample c within radius of v: S - v + c, Delaunay
 //       keep the lowest objective if it is lower than now (ties: lower c)
 //       flag the references around v's old and new place
+//   keep the result if it is lower than the given mesh, else the given mesh
+//   with no moves
 //
 // Every move is logged like a collapse (kind "relocation", removed and
-// added triangles), so the collapse log replays through it. Errors of
+// added triangles; the first against the given mesh), so the collapse log
+// replays through it. Errors of
 // (dense sample, triangle) pairs are cached; deterministic for any thread
 // count (only error batches run in parallel).
 

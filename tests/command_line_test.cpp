@@ -232,7 +232,7 @@ TEST_CASE("an irregular data set without paths decimates, evaluates against ever
   CHECK(std::filesystem::exists(directory / "frames" / "frame_0001.png"));
 }
 
-TEST_CASE("suite: each count selected with the selection's blend weights and evaluated with the evaluation's") {
+TEST_CASE("suite: each count selected with the selection's blend weights and width, evaluated with the evaluation's") {
   testing::TemporaryDirectory directory;
   const std::filesystem::path out = directory / "suite";
   testing::writeAnalyticDataset(out / "room" / "dataset", 5, 4, 64, 6, 0.35f);  // found: no capture
@@ -261,6 +261,10 @@ TEST_CASE("suite: each count selected with the selection's blend weights and eva
   CHECK(reliability["probe_errors"]["uniform"] == byDefault["probe_errors"]["uniform"]);
   const Selection written = readSelection(out / "room" / "selection_6.json", Dataset::open(out / "room" / "dataset"));
   CHECK(written.settings["quality"].get<std::string>().find("reliability weights") != std::string::npos);
+  // A coarser selection error: the selection says so, the evaluation stays at 64x32.
+  const nlohmann::json coarse = run(" --selection-error-width 32");
+  CHECK(coarse["settings"]["quality"].get<std::string>().find("errors at 32x16") != std::string::npos);
+  CHECK(coarse["probe_errors"]["uniform"] == byDefault["probe_errors"]["uniform"]);
 }
 
 TEST_CASE("import and export from the command line: a round trip, its report, and bad options in one line") {

@@ -52,6 +52,13 @@ void benchDecimate(BenchTable& table, const Scene& scene, const std::string& dat
              "initial edge costs " + formatNumber(run.costingSeconds, 1) + " s, " + std::to_string(run.collapses) +
                  " collapses to " + std::to_string(run.initialSamples - int(run.collapses)) +
                  " samples; loading the panoramas " + formatNumber(loadSeconds, 1) + " s more"});
+  // The viewer's live decimation runs the same decimator, one collapse at
+  // a time after the initial costing.
+  const double collapsing = run.collapseSeconds - run.costingSeconds;
+  table.add({"live collapses (the viewer's decimation, after the initial costing)", size,
+             formatNumber(collapsing > 0.0 ? double(run.collapses) / collapsing : 0.0, 1) + " collapses/s",
+             std::to_string(run.collapses) + " collapses in " + formatNumber(collapsing, 1) +
+                 " s, from the dense mesh down to the threshold"});
   table.add({"decimation peak memory (with refinement)", size, formatNumber(peakResidentGigabytes(), 2) + " GiB",
              "process peak RSS (the capture before it needs far less): panoramas at the error width plus the "
              "warped-layer cache (" + formatNumber(double(errors.layerCache().budgetBytes()) / double(1u << 30), 1) +

@@ -176,6 +176,7 @@ void registerSuiteCommand(CLI::App& app) {
     bool quiet = false;
     SelectionArguments selection;
     std::string selectionBlendWeights = blendWeightsName(kSelectionBlendWeights);
+    int selectionErrorWidth = 0;  // 0: the evaluation's
     ErrorArguments errors;
   };
   auto arguments = std::make_shared<Arguments>();
@@ -193,6 +194,11 @@ void registerSuiteCommand(CLI::App& app) {
                       "Blend weights of the errors the selection is made with (--blend-weights: those it is "
                       "evaluated with)")
       ->capture_default_str()->check(CLI::IsMember({"reliability", "distance"}));
+  command
+      ->add_option("--selection-error-width", arguments->selectionErrorWidth,
+                   "Panorama width of the errors the selection is made with (default: --error-width, the "
+                   "evaluation's)")
+      ->check(nonNegativeNumber());
   addErrorOptions(*command, arguments->errors, BlendOptions{}.weights);
 
   command->callback([arguments] {
@@ -233,6 +239,10 @@ void registerSuiteCommand(CLI::App& app) {
       const TriangleErrorSettings settings = triangleErrorSettings(a.errors, dataset);
       TriangleErrorSettings selectionErrorSettings = settings;
       selectionErrorSettings.synthesis.blend.weights = parseBlendWeights(a.selectionBlendWeights);
+      if (a.selectionErrorWidth > 0) {
+        dataset.downsamplingFactor(a.selectionErrorWidth, "--selection-error-width");
+        selectionErrorSettings.width = a.selectionErrorWidth;
+      }
       std::printf("== %s: selection with %s\n== %s: evaluation with %s\n", scene.name.c_str(),
                   describeErrorSettings(selectionErrorSettings).c_str(), scene.name.c_str(),
                   describeErrorSettings(settings).c_str());

@@ -265,6 +265,21 @@ TEST_CASE("suite: each count selected with the selection's blend weights and wid
   const nlohmann::json coarse = run(" --selection-error-width 32");
   CHECK(coarse["settings"]["quality"].get<std::string>().find("errors at 32x16") != std::string::npos);
   CHECK(coarse["probe_errors"]["uniform"] == byDefault["probe_errors"]["uniform"]);
+
+  // A selection off its target (as when no valid collapse is left): the
+  // baselines get as many references as edge collapse kept.
+  REQUIRE(runTriwalk(directory, "decimate --quiet --dataset " + (out / "room" / "dataset").string() +
+                                    " --target 9 --out " + (out / "room" / "selection_6.json").string())
+              .status == 0);
+  const RunResult offTarget =
+      runTriwalk(directory, "suite --quiet --reuse-selections --spec " + spec.string() + " --out " + out.string());
+  INFO("suite: " << offTarget.err);
+  REQUIRE(offTarget.status == 0);
+  CHECK(offTarget.out.find("| room | 9 (target 6) |") != std::string::npos);
+  const nlohmann::json reused = nlohmann::json::parse(testing::readTextFileOrEmpty(out / "suite.json"))["rows"][0];
+  CHECK(reused["samples"].get<int>() == 6);
+  CHECK(reused["edge_collapse_samples"].get<int>() == 9);
+  CHECK(reused["probe_errors"]["kmedoids"] != byDefault["probe_errors"]["kmedoids"]);
 }
 
 TEST_CASE("import and export from the command line: a round trip, its report, and bad options in one line") {

@@ -109,7 +109,8 @@ Comparison compare(const std::vector<double>& candidate, const std::vector<doubl
 struct SuiteRow {
   std::string scene;
   double fraction = 0.0;
-  int count = 0;
+  int count = 0;         // the target
+  int reachedCount = 0;  // edge collapse's references, which every other method gets too
   int uniformCount = 0;
   double dense = 0.0, uniform = 0.0, kmedoids = 0.0, random = 0.0, edgeCollapse = 0.0;
   Comparison versusUniform, versusKMedoids;
@@ -129,9 +130,13 @@ std::string tableOf(const std::vector<SuiteRow>& rows, const std::vector<double>
   out << "| scene | samples | dense | uniform | k-medoids | random | edge collapse | vs uniform | vs k-medoids | gap closed |\n"
          "|---|---|---|---|---|---|---|---|---|---|\n";
   for (const SuiteRow& r : rows) {
-    std::snprintf(line, sizeof line, "| %s | %d | %.4f | %.4f (%d) | %.4f | %.4f | %.4f | %s | %s | %.0f%% |\n",
-                  r.scene.c_str(), r.count, r.dense, r.uniform, r.uniformCount, r.kmedoids, r.random, r.edgeCollapse,
-                  formatPercent(r.versusUniform).c_str(), formatPercent(r.versusKMedoids).c_str(), 100.0 * r.gapClosed);
+    const std::string samples = r.reachedCount == r.count
+                                    ? std::to_string(r.count)
+                                    : std::to_string(r.reachedCount) + " (target " + std::to_string(r.count) + ")";
+    std::snprintf(line, sizeof line, "| %s | %s | %.4f | %.4f (%d) | %.4f | %.4f | %.4f | %s | %s | %.0f%% |\n",
+                  r.scene.c_str(), samples.c_str(), r.dense, r.uniform, r.uniformCount, r.kmedoids, r.random,
+                  r.edgeCollapse, formatPercent(r.versusUniform).c_str(), formatPercent(r.versusKMedoids).c_str(),
+                  100.0 * r.gapClosed);
     out << line;
   }
   out << "\nMeans over scenes (the relative differences and the gap closed averaged; wins = rows where edge collapse "
@@ -290,15 +295,21 @@ void registerSuiteCommand(CLI::App& app) {
         row.fraction = fraction;
         row.count = count;
         row.selectionSeconds = selectionSeconds[f];
-        const ViewMesh uniform = datasetMesh(dataset, uniformSelection(dataset, count), "uniform baseline");
+        // The decimation can stop off its target: above it when no valid
+        // collapse is left (a level whose parts and corridors each need
+        // their own triangles), below it when a collapse also drops a
+        // boundary sample. The baselines get as many references as edge
+        // collapse kept, so every row compares equal counts.
+        const int reached = int(selection.samples.size());
+        row.reachedCount = reached;
+        const ViewMesh uniform = datasetMesh(dataset, uniformSelection(dataset, reached), "uniform baseline");
         row.uniformCount = uniform.vertexCount();
         const std::vector<double> edgeCollapse = probeErrors(selectionMesh(selection, dataset), errors);
         const std::vector<double> uniformErrors = probeErrors(uniform, errors);
         const std::vector<double> kmedoids =
-            probeErrors(datasetMesh(dataset, kMedoidsSelection(positions, count), "k-medoids baseline"), errors);
-        const std::vector<double> random =
-            probeErrors(datasetMesh(dataset, randomSelection(dataset.sampleCount(), count, 1), "random baseline"),
-                        errors);
+            probeErrors(datasetMesh(dataset, kMedoidsSelection(positions, reached), "k-medoids baseline"), errors);
+        const std::vector<double> random = probeErrors(
+            datasetMesh(dataset, randomSelection(dataset.sampleCount(), reached, 1), "random baseline"), errors);
         row.dense = mean(dense);
         row.uniform = mean(uniformErrors);
         row.kmedoids = mean(kmedoids);
@@ -316,6 +327,7 @@ void registerSuiteCommand(CLI::App& app) {
                            {"settings", selection.settings},
                            {"fraction", fraction},
                            {"samples", count},
+                           {"edge_collapse_samples", reached},
                            {"uniform_samples", row.uniformCount},
                            {"selection", "selection_" + std::to_string(count) + ".json"},
                            {"selection_seconds", row.selectionSeconds},

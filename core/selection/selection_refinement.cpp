@@ -215,7 +215,6 @@ private:
     while (!flagged.empty() && passes < options_.maxPasses) {
       ++passes;
       ++result_.passes;
-      ++result_.passes;
       const std::vector<int> examine(flagged.begin(), flagged.end());
       flagged.clear();
       if (progress) progress->setTotal(progress->done() + examine.size());  // time left: of this pass

@@ -154,8 +154,7 @@ public:
         mesh_(std::vector<glm::dvec2>(positions.begin(), positions.end()), current, sharedRegion(options.region)),
         references_(mesh_.vertices()),
         result_(result),
-        start_(mesh_),
-        logged_(mesh_) {
+        start_(mesh_) {
     const std::vector<SampleReconstruction> assignment = evaluator_.assignments(mesh_);
     evaluator_.compute({assignment});
     objective_ = startObjective_ = evaluator_.mean(assignment);
@@ -346,12 +345,14 @@ private:
     move.kind = PlacementKind::Relocation;
     move.cost = candidate.objective;
     move.error = candidate.objective;
-    move.removed = without(logged_.triangles(), candidate.mesh->triangles());
-    move.added = without(candidate.mesh->triangles(), logged_.triangles());
+    // The log starts from the given mesh, not from the Delaunay mesh the
+    // moves start from.
+    const ViewMesh& logged = result_.moves.empty() ? start_ : mesh_;
+    move.removed = without(logged.triangles(), candidate.mesh->triangles());
+    move.added = without(candidate.mesh->triangles(), logged.triangles());
     result_.moves.push_back(std::move(move));
     references_ = candidate.references;
     mesh_ = *candidate.mesh;
-    logged_ = mesh_;
     objective_ = candidate.objective;
   }
 
@@ -364,7 +365,6 @@ private:
   RefinementResult& result_;
   ViewMesh start_;  // the given mesh
   double startObjective_ = 0.0;
-  ViewMesh logged_;  // the mesh the log has reached: the given one, then after each move
 };
 
 }  // namespace

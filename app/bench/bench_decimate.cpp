@@ -71,9 +71,10 @@ void benchDecimate(BenchTable& table, const Scene& scene, const std::string& dat
   table.add({"refinement wall time (references moved at the final count)", size,
              formatNumber(run.refinementSeconds, 1) + " s",
              std::to_string(refinement.moves.size()) + " moves (" + std::to_string(refinement.exchanges) +
-                 " exchanges), " + std::to_string(refinement.passes) + " passes of local moves; dense-sample errors computed " + std::to_string(refinement.errorsComputed) + ", cached " +
-                 std::to_string(refinement.cacheHits) + "; mean error " + formatNumber(refinement.objectiveBefore, 4) +
-                 " -> " + formatNumber(refinement.objectiveAfter, 4)});
+                 " exchanges), " + std::to_string(refinement.passes) +
+                 " passes of local moves; dense-sample errors computed " + std::to_string(refinement.errorsComputed) +
+                 ", cached " + std::to_string(refinement.cacheHits) + "; mean error " +
+                 formatNumber(refinement.objectiveBefore, 4) + " -> " + formatNumber(refinement.objectiveAfter, 4)});
   if (captured) std::filesystem::remove_all(directory);
 }
 

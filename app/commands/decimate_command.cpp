@@ -81,12 +81,12 @@ void registerDecimateCommand(CLI::App& app) {
                 (unsigned long long)statistics.cacheHits, (unsigned long long)statistics.staleEntriesSkipped);
     const RefinementResult& refinement = run.refinement;
     if (refinement.radius > 0.0) {
-      std::printf("refinement: %zu moves (%d exchanges, %d passes of local moves within %.2f m); mean error over the "
-                  "dense samples %.4f -> %.4f; %.1f s, errors computed %llu, served from the cache %llu\n",
-                  refinement.moves.size(), refinement.exchanges, refinement.passes, refinement.radius,
-                  refinement.objectiveBefore,
-                  refinement.objectiveAfter, run.refinementSeconds, (unsigned long long)refinement.errorsComputed,
-                  (unsigned long long)refinement.cacheHits);
+      std::printf(
+          "refinement: %zu moves (%d exchanges, %d passes of local moves within %.2f m); mean error over the "
+          "dense samples %.4f -> %.4f; %.1f s, errors computed %llu, served from the cache %llu\n",
+          refinement.moves.size(), refinement.exchanges, refinement.passes, refinement.radius,
+          refinement.objectiveBefore, refinement.objectiveAfter, run.refinementSeconds,
+          (unsigned long long)refinement.errorsComputed, (unsigned long long)refinement.cacheHits);
     }
     std::printf("warped layers computed %llu, reused %llu\n", (unsigned long long)errors.layerCache().misses(),
                 (unsigned long long)errors.layerCache().hits());

@@ -372,6 +372,143 @@ TEST_CASE("decimation serves samples outside the mesh as eval does: the nearest 
   CHECK(blindNearest > 0);
 }
 
+namespace {
+
+// Two 4 x 3 m rooms joined by a doorway, sampled every 0.3 m with a little
+// jitter (no sample on an edge), and errors that grow with the distance to
+// the references and jump behind a wall: late collapses serve dozens of
+// samples each, so pricing and screening have work to cut.
+struct TwoRooms {
+  WalkableRegion region{
+      {{{{0, 0}, {4, 0}, {4, 1}, {4.5, 1}, {4.5, 0}, {8.5, 0}, {8.5, 3}, {4.5, 3}, {4.5, 2}, {4, 2}, {4, 3}, {0, 3}},
+        {}}},
+      "two rooms"};
+  std::vector<glm::dvec2> positions;
+  FormulaErrors::Formula formula;
+
+  TwoRooms() {
+    for (double x = 0.15; x < 8.5; x += 0.3) {
+      for (double y = 0.15; y < 3.0; y += 0.3) {
+        const glm::dvec2 jitter(0.003 * std::sin(37.0 * x + 11.0 * y), 0.003 * std::cos(17.0 * x - 29.0 * y));
+        if (region.contains({x, y})) positions.push_back(glm::dvec2(x, y) + jitter);
+      }
+    }
+    formula = [this](const Triangle& t, int destination) {
+      double error = 0.0;
+      for (int v : t) {
+        const glm::dvec2 a = positions[size_t(v)], b = positions[size_t(destination)];
+        error += glm::length(a - b) + (region.lineOfSight(a, b) ? 0.0 : 10.0);
+      }
+      return error;
+    };
+  }
+  ViewMesh dense() const { return ViewMesh::delaunay(positions, {}, "two rooms", &region); }
+};
+
+}  // namespace
+
+TEST_CASE(
+    "pricing collapses on a subset of their served samples: fewer errors, exact errors kept, the same when "
+    "the subset is all") {
+  const TwoRooms rooms;
+  REQUIRE(rooms.positions.size() > 250);
+  auto decimate = [&](int priced, bool lazy) {
+    FormulaErrors errors(rooms.formula);
+    DecimationOptions options;
+    options.maxError = 0.0;
+    options.targetSamples = 12;
+    options.pricedSamples = priced;
+    options.lazyRecosting = lazy;
+    EdgeCollapseDecimator decimator(rooms.dense(), DecimationErrors{nullptr, &errors}, options);
+    while (decimator.step()) {
+      // The errors the samples are served with stay exact, priced or not.
+      REQUIRE(decimator.servedSampleMeanError() ==
+              doctest::Approx(meanError(decimator.mesh(), rooms.formula)).epsilon(1e-12));
+    }
+    CHECK(decimator.vertexCount() == 12);
+    return std::tuple(decimator.log(), errors.computed, decimator.servedSampleMeanError());
+  };
+  const auto [exactLog, exactErrors, exactMean] = decimate(0, false);
+  // A subset larger than any collapse serves prices exactly.
+  const auto [allLog, allErrors, allMean] = decimate(1000, false);
+  REQUIRE(allLog.size() == exactLog.size());
+  for (size_t i = 0; i < exactLog.size(); ++i) {
+    CHECK(allLog[i].placement == exactLog[i].placement);
+    CHECK(allLog[i].cost == exactLog[i].cost);
+  }
+  // 8 samples per collapse: late collapses serve dozens, so fewer errors;
+  // the selection is not far from the exact one.
+  const auto [pricedLog, pricedErrors, pricedMean] = decimate(8, false);
+  CHECK(pricedErrors < exactErrors * 3 / 4);
+  CHECK(pricedMean < 1.2 * exactMean);
+  // Lazy re-costing: fewer errors (each collapse is re-costed before it is made).
+  const auto [lazyLog, lazyErrors, lazyMean] = decimate(0, true);
+  CHECK(lazyErrors < exactErrors);
+  CHECK(lazyMean < 1.2 * exactMean);
+  MESSAGE("errors computed: exact ", exactErrors, ", priced 8 ", pricedErrors, ", lazy ", lazyErrors, "; mean error ",
+          exactMean, " / ", pricedMean, " / ", lazyMean);
+}
+
+TEST_CASE("a lazily re-costed decimator makes each collapse at the cost a fresh evaluation gives it") {
+  const TwoRooms rooms;
+  FormulaErrors errors(rooms.formula);
+  DecimationOptions options;
+  options.maxError = 0.0;
+  options.targetSamples = 40;
+  options.lazyRecosting = true;
+  EdgeCollapseDecimator decimator(rooms.dense(), DecimationErrors{nullptr, &errors}, options);
+  while (true) {
+    const std::optional<Collapse> next = decimator.peekNextCollapse();
+    if (!next || decimator.vertexCount() <= 40) break;
+    const std::optional<Collapse> fresh = decimator.evaluateCollapse(next->first, next->second, next->placement);
+    REQUIRE(fresh);
+    CHECK(fresh->cost == next->cost);
+    REQUIRE(decimator.step());
+    CHECK(decimator.log().back().placement == next->placement);
+  }
+  CHECK(decimator.vertexCount() == 40);
+}
+
+TEST_CASE("screened refinement: fewer errors, only moves that lower the exact objective") {
+  const TwoRooms rooms;
+  // Twelve references crowded into the left room: most must move, some
+  // across the doorway (exchanges).
+  std::vector<int> references;
+  for (int i = 0; i < int(rooms.positions.size()) && references.size() < 12; ++i) {
+    if (rooms.positions[size_t(i)].x < 1.0 && std::fmod(double(i), 5.0) == 0.0) references.push_back(i);
+  }
+  const int corners[] = {0, 9};  // (0.15, 0.15) and (0.15, 2.85): keep the left wall covered
+  references.insert(references.end(), std::begin(corners), std::end(corners));
+  std::sort(references.begin(), references.end());
+  references.erase(std::unique(references.begin(), references.end()), references.end());
+  const ViewMesh start = ViewMesh::delaunay(rooms.positions, references, "two rooms", &rooms.region);
+  auto refine = [&](double share) {
+    FormulaErrors errors(rooms.formula);
+    RefinementOptions options;
+    options.region = &rooms.region;
+    options.screenedShare = share;
+    const RefinementResult result = refineSelection(rooms.positions, start.triangles(), errors, options);
+    return std::pair(result, errors.computed);
+  };
+  const auto [exact, exactErrors] = refine(0.0);
+  const auto [screened, screenedErrors] = refine(0.25);
+  REQUIRE(screened.moves.size() >= 3);
+  CHECK(screened.exchanges >= 1);
+  CHECK(screenedErrors < exactErrors * 3 / 4);
+  // Every move lowered the exact objective, which is what is reported.
+  double previous = screened.objectiveBefore;
+  for (const Collapse& move : screened.moves) {
+    CHECK(move.cost < previous);
+    previous = move.cost;
+  }
+  const ViewMesh final(rooms.positions, screened.triangles, sharedRegion(&rooms.region));
+  CHECK(screened.objectiveAfter == doctest::Approx(meanError(final, rooms.formula)).epsilon(1e-12));
+  CHECK(screened.objectiveAfter < 0.8 * screened.objectiveBefore);
+  CHECK(screened.objectiveAfter < 1.1 * exact.objectiveAfter);
+  MESSAGE("refinement: exact ", exact.objectiveAfter, " with ", exactErrors, " errors; screened ",
+          screened.objectiveAfter, " with ", screenedErrors);
+}
+
 TEST_CASE(
     "a captured data set: decimation then refinement, the same with 1 and 2 threads (grid and simplified source "
     "meshes), and through selection.json") {
@@ -390,10 +527,12 @@ TEST_CASE(
     options.maxError = 0.0;     // the refinement has references on the boundary to move
     options.targetSamples = 5;
     options.fixedBoundary = true;
+    options.pricedSamples = 2;  // so that pricing subsets, and screening, have work here
     EdgeCollapseDecimator decimator(initial, DecimationErrors{&errors, &errors}, options);
     decimator.run();
     const ViewMesh decimated = decimator.mesh();
-    RefinementResult refinement = refineSelection(positions, decimated.triangles(), errors, {10.0, 8, {}, nullptr, {}});
+    RefinementResult refinement =
+        refineSelection(positions, decimated.triangles(), errors, {10.0, 8, {}, nullptr, {}, 0.5});
     std::vector<Collapse> log = decimator.log();
     log.insert(log.end(), refinement.moves.begin(), refinement.moves.end());
     return std::pair(log, refinement);

@@ -47,6 +47,19 @@ void addSelectionOptions(CLI::App& command, SelectionArguments& arguments) {
   command.add_flag("--one-ring", arguments.oneRing, "Also try every free sample inside the two one-rings as the placement");
   command.add_flag("--unweighted-cost", arguments.unweightedCost,
                    "With --cost centroid: the paper's plain mean of the new triangles' errors (default: area-weighted)");
+  command
+      .add_option("--priced-samples", arguments.pricedSamples,
+                  "With --cost served-samples: price each collapse from at most this many of the samples its "
+                  "triangles serve (a fixed random subset of each triangle's, scaled up), besides the references it "
+                  "frees; 0: all")
+      ->capture_default_str()
+      ->check(nonNegativeNumber());
+  command
+      .add_option("--recosting", arguments.recosting,
+                  "After a collapse: eager (cost every edge it changed at once) or lazy (only the placement's; "
+                  "the others are costed again when they reach the top of the queue)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"eager", "lazy"}));
   command.add_option("--refine-radius", arguments.refineRadius,
                      "After decimation, move references up to this far (metres) at a time while that lowers the "
                      "mean error over the dense samples; 0 disables (default: to any of the 8 nearest samples, "
@@ -56,6 +69,13 @@ void addSelectionOptions(CLI::App& command, SelectionArguments& arguments) {
                      "At most this many exchanges in the refinement, a reference anywhere for a free sample anywhere "
                      "(default: as many as there are references; 0: local moves only)")
       ->check(nonNegativeNumber());
+  command
+      .add_option("--refine-screen", arguments.refineScreen,
+                  "Share of the dense samples (a fixed random subset) the refinement ranks candidate moves on "
+                  "before scoring the best few on all of them (faster, and it misses moves: see docs/RESULTS.md); 0: "
+                  "every candidate on all of them")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
 }
 
 SelectionSettings selectionSettings(const SelectionArguments& arguments, double maxError, int targetSamples) {
@@ -67,8 +87,11 @@ SelectionSettings selectionSettings(const SelectionArguments& arguments, double 
   options.cost = parseCollapseCost(arguments.cost);
   options.fixedBoundary = arguments.fixedBoundary || options.cost == CollapseCost::Centroid;
   options.areaWeightedCost = !arguments.unweightedCost;
+  options.pricedSamples = arguments.pricedSamples;
+  options.lazyRecosting = arguments.recosting == "lazy";
   settings.refinement.radius = arguments.refineRadius;
   settings.refinement.maxExchanges = arguments.exchanges;
+  settings.refinement.screenedShare = arguments.refineScreen;
   return settings;
 }
 
@@ -81,9 +104,13 @@ nlohmann::json describeSelectionSettings(const SelectionSettings& settings, cons
           {"cost", collapseCostName(options.cost)},
           {"fixed_boundary", options.fixedBoundary},
           {"area_weighted_cost", options.areaWeightedCost},
-          {"refine_radius", settings.refinement.radius ? nlohmann::json(*settings.refinement.radius) : nlohmann::json("auto")},
+          {"priced_samples", options.pricedSamples},
+          {"recosting", options.lazyRecosting ? "lazy" : "eager"},
+          {"refine_radius",
+           settings.refinement.radius ? nlohmann::json(*settings.refinement.radius) : nlohmann::json("auto")},
           {"exchanges", settings.refinement.maxExchanges ? nlohmann::json(*settings.refinement.maxExchanges)
-                                                          : nlohmann::json("auto")},
+                                                         : nlohmann::json("auto")},
+          {"refine_screen", settings.refinement.screenedShare},
           {"error_width", errors.width},
           {"quality", describeErrorSettings(errors)}};
 }

@@ -28,8 +28,11 @@ struct SelectionArguments {
   std::string cost = "served-samples";
   bool fixedBoundary = false;
   bool unweightedCost = false;
+  int pricedSamples = DecimationOptions{}.pricedSamples;
+  std::string recosting = DecimationOptions{}.lazyRecosting ? "lazy" : "eager";
   std::optional<double> refineRadius;  // none: neighbourhoodRadius
   std::optional<int> exchanges;        // none: as many as references
+  double refineScreen = RefinementOptions{}.screenedShare;
 };
 
 void addSelectionOptions(CLI::App& command, SelectionArguments& arguments);

@@ -24,6 +24,15 @@ bool hasVertex(const Triangle& t, int v) { return t[0] == v || t[1] == v || t[2]
 
 }  // namespace
 
+// SplitMix64's finaliser: well mixed, so that the lowest ranks of any set
+// of samples are a uniform random subset of it.
+uint64_t samplePricingRank(int sample) {
+  uint64_t value = uint64_t(sample) + 0x9e3779b97f4a7c15ull;
+  value = (value ^ (value >> 30)) * 0xbf58476d1ce4e5b9ull;
+  value = (value ^ (value >> 27)) * 0x94d049bb133111ebull;
+  return value ^ (value >> 31);
+}
+
 const char* placementName(PlacementKind kind) {
   switch (kind) {
     case PlacementKind::First: return "first";
@@ -70,6 +79,7 @@ EdgeCollapseDecimator::EdgeCollapseDecimator(const ViewMesh& mesh, DecimationErr
   }
   for (int v : mesh.vertices()) isVertex_[size_t(v)] = 1;
   vertexCount_ = mesh.vertexCount();
+  for (size_t s = 0; s < positions_.size(); ++s) pricingOrder_.push_back(samplePricingRank(int(s)));
   if (region_ && !region_->convex()) sight_.assign(positions_.size() * positions_.size(), -1);
   if (options_.cost == CollapseCost::ServedSamples) serveInitialSamples(mesh, costing);
   std::set<Edge> edges;
@@ -325,6 +335,64 @@ void EdgeCollapseDecimator::assignServedSamples(int a, int b, Plan& plan) const 
     plan.servedBy.push_back(home);
     plan.servedRank.push_back(rank);
   }
+  choosePricedSamples(a, b, plan);
+}
+
+// Which served samples price the collapse, and how much each stands for:
+// all of them, or, past pricedSamples, the freed vertices and, from the
+// others, a share of each new serving triangle's samples (its share of the
+// others, at least one): those of lowest fixed rank, each standing for
+// its triangle's weight over theirs. Stratified by triangle because a
+// sample's error depends mostly on the triangle serving it. The rank is
+// the same for every plan, so the subsets of overlapping plans overlap
+// (their errors are shared through the cache), and a late collapse, whose
+// triangles serve hundreds of samples, costs what an early one does.
+void EdgeCollapseDecimator::choosePricedSamples(int a, int b, Plan& plan) const {
+  plan.priced.clear();
+  plan.pricedScale.clear();
+  const size_t limit = size_t(options_.pricedSamples);
+  const size_t others = plan.served.size() - size_t(std::count_if(plan.served.begin(), plan.served.end(),
+                                                                  [&](int s) { return s == a || s == b; }));
+  if (limit == 0 || others <= limit) {
+    for (size_t i = 0; i < plan.served.size(); ++i) plan.priced.push_back(int(i));
+    plan.pricedScale.assign(plan.served.size(), 1.0);
+    return;
+  }
+  std::map<int, std::vector<std::pair<uint64_t, int>>> byTriangle;  // servedBy -> (rank, index)
+  std::vector<std::pair<int, double>> chosen;                       // (index, scale)
+  for (size_t i = 0; i < plan.served.size(); ++i) {
+    const int sample = plan.served[i];
+    if (sample == a || sample == b) {
+      chosen.emplace_back(int(i), 1.0);
+    } else {
+      byTriangle[plan.servedBy[i]].emplace_back(pricingOrder_[size_t(sample)], int(i));
+    }
+  }
+  for (auto& [triangle, members] : byTriangle) {
+    const size_t keep = std::max<size_t>(1, (limit * members.size() + others - 1) / others);
+    std::sort(members.begin(), members.end());
+    double all = 0.0, kept = 0.0;
+    for (size_t k = 0; k < members.size(); ++k) {
+      const double weight = weightOf(plan.served[size_t(members[k].second)]);
+      all += weight;
+      if (k < keep) kept += weight;
+    }
+    for (size_t k = 0; k < std::min(keep, members.size()); ++k) {
+      chosen.emplace_back(members[k].second, kept > 0.0 ? all / kept : 0.0);
+    }
+  }
+  std::sort(chosen.begin(), chosen.end());
+  for (const auto& [i, scale] : chosen) {
+    plan.priced.push_back(i);
+    plan.pricedScale.push_back(scale);
+  }
+}
+
+std::vector<SampleReconstruction> EdgeCollapseDecimator::pricingRequests(const Plan& plan) const {
+  std::vector<SampleReconstruction> requests;
+  for (int i : plan.priced)
+    requests.push_back({sortedTriangle(servingTriangle(plan, size_t(i))), plan.served[size_t(i)]});
+  return requests;
 }
 
 std::vector<std::pair<int, PlacementKind>> EdgeCollapseDecimator::candidates(int a, int b, EdgeState& state) const {
@@ -500,16 +568,34 @@ std::pair<double, double> EdgeCollapseDecimator::evaluate(const Plan& plan) {
     const double mean = meanError(plan.added);
     return {mean, mean};
   }
-  double after = 0.0, before = 0.0, weightSum = 0.0;
-  for (size_t i = 0; i < plan.served.size(); ++i) {
-    const int sample = plan.served[i];
+  const double placementBefore = weightOf(plan.placement) * homeError_[size_t(plan.placement)];
+  if (plan.priced.size() == plan.served.size()) {
+    double after = 0.0, before = 0.0, weightSum = 0.0;
+    for (size_t i = 0; i < plan.served.size(); ++i) {
+      const int sample = plan.served[i];
+      const double weight = weightOf(sample);
+      after += weight * sampleError(servingTriangle(plan, i), sample);
+      before += weight * homeError_[size_t(sample)];
+      weightSum += weight;
+    }
+    return {after - before - placementBefore, weightSum > 0.0 ? after / weightSum : 0.0};
+  }
+  // A subset priced: each priced sample's change of error (paired, since
+  // a sample's error before and after are close; a freed vertex's before
+  // is 0) stands for the samples it was chosen for.
+  double before = 0.0, weightSum = 0.0, change = 0.0;
+  for (const int sample : plan.served) {
     const double weight = weightOf(sample);
-    after += weight * sampleError(servingTriangle(plan, i), sample);
     before += weight * homeError_[size_t(sample)];
     weightSum += weight;
   }
-  before += weightOf(plan.placement) * homeError_[size_t(plan.placement)];
-  return {after - before, weightSum > 0.0 ? after / weightSum : 0.0};
+  for (size_t k = 0; k < plan.priced.size(); ++k) {
+    const size_t i = size_t(plan.priced[k]);
+    const int sample = plan.served[i];
+    const double after = sampleError(servingTriangle(plan, i), sample);
+    change += plan.pricedScale[k] * weightOf(sample) * (after - homeError_[size_t(sample)]);
+  }
+  return {change - placementBefore, weightSum > 0.0 ? (before + change) / weightSum : 0.0};
 }
 
 // Costs a batch of edges: every candidate collapse is simulated first, the
@@ -532,9 +618,8 @@ void EdgeCollapseDecimator::costEdges(const std::vector<Edge>& edges, ProgressRe
       if (options_.cost == CollapseCost::Centroid) {
         needed.insert(needed.end(), plan.added.begin(), plan.added.end());
       } else {
-        for (size_t k = 0; k < plan.served.size(); ++k) {
-          neededSamples.push_back({sortedTriangle(servingTriangle(plan, k)), plan.served[k]});
-        }
+        const std::vector<SampleReconstruction> requests = pricingRequests(plan);
+        neededSamples.insert(neededSamples.end(), requests.begin(), requests.end());
       }
       plans.push_back({i, std::move(plan)});
     }
@@ -629,9 +714,7 @@ std::optional<Collapse> EdgeCollapseDecimator::evaluateCollapse(int first, int s
   if (options_.cost == CollapseCost::Centroid) {
     ensureErrors(plan.added);
   } else {
-    std::vector<SampleReconstruction> needed;
-    for (size_t k = 0; k < plan.served.size(); ++k) needed.push_back({sortedTriangle(servingTriangle(plan, k)), plan.served[k]});
-    ensureSampleErrors(needed);
+    ensureSampleErrors(pricingRequests(plan));
   }
   const auto [cost, error] = evaluate(plan);
   if (options_.maxError > 0.0 && error > options_.maxError) return std::nullopt;
@@ -682,6 +765,12 @@ void EdgeCollapseDecimator::apply(const Edge& edge, const EdgeState& state) {
   int placementHome = -1;
   std::set<int> gainedSamples;  // existing triangles that now serve samples outside the mesh
   if (options_.cost == CollapseCost::ServedSamples) {
+    if (plan.priced.size() < plan.served.size()) {  // the samples left out of the price have errors from now on
+      std::vector<SampleReconstruction> every;
+      for (size_t i = 0; i < plan.served.size(); ++i)
+        every.push_back({sortedTriangle(servingTriangle(plan, i)), plan.served[i]});
+      ensureSampleErrors(every);
+    }
     const int firstAdded = int(triangles_.size()) - int(plan.added.size());
     served_.resize(triangles_.size());
     for (int t : plan.removed) served_[size_t(t)].clear();
@@ -741,6 +830,15 @@ void EdgeCollapseDecimator::apply(const Edge& edge, const EdgeState& state) {
       changed |= freed != plan.placement && glm::length(positions_[size_t(freed)] - midpoint) < otherState.midpointDistance;
     }
     if (changed) affected.insert(other);
+  }
+  if (options_.lazyRecosting) {
+    // An edge without a finite cost has no heap entry that would bring it
+    // back when it became valid, so it is costed now as well.
+    std::erase_if(affected, [&](const Edge& other) {
+      if (other.first == plan.placement || other.second == plan.placement) return false;
+      const auto known = edges_.find(other);
+      return known != edges_.end() && std::isfinite(known->second.cost);
+    });
   }
   costEdges(std::vector<Edge>(affected.begin(), affected.end()));
 }

@@ -13,7 +13,8 @@
 //     pop the cheapest edge (skip entries whose stamp is stale), re-check
 //     its cost (a far sample may have been freed or taken), collapse it,
 //     log it, and re-cost every edge whose updated triangles changed:
-//     those touching p or a neighbour of p
+//     those touching p or a neighbour of p (lazily: only p's edges; the
+//     others keep their cost until they reach the top and are re-checked)
 //   until the target sample count, or no valid collapse is left under
 //   the error threshold.
 //
@@ -24,7 +25,8 @@
 //     error over the samples its new triangles serve (those freed by it
 //     included). Greedy on this cost removes, at each step, the reference
 //     whose loss the walkthrough feels least, measured where it is felt.
-//     The threshold applies to the mean error of those samples.
+//     The threshold applies to the mean error of those samples. Past
+//     pricedSamples, a stratified random subset of them prices it.
 //   centroid (the paper's): the mean error of the updated triangles, each
 //     measured at one destination near its centroid, weighted by area
 //     unless asked otherwise; the threshold applies to that mean.
@@ -99,6 +101,14 @@ struct DecimationOptions {
   // (sampleAreaWeights), so that sums over samples estimate the area's
   // error; empty: equal shares.
   std::vector<double> sampleWeights;
+  // Served-sample cost: price a collapse from at most this many of the
+  // samples it serves, besides the vertices it frees (which are always
+  // priced); 0: all of them. See choosePricedSamples.
+  int pricedSamples = 32;
+  // After a collapse, cost only the placement's edges at once; the other
+  // edges it changed keep their cost in the heap until they reach its top,
+  // where every edge is costed again before it collapses.
+  bool lazyRecosting = true;
 };
 
 // Where the costs come from: triangle errors for the centroid cost,
@@ -167,6 +177,8 @@ private:
     std::vector<int> served;          // served-sample cost: the samples whose triangle changes
     std::vector<int> servedBy;        // per served sample: index into added, or -1 - id of an existing triangle
     std::vector<ServingRank> servedRank;  // of that triangle for the sample ({false, 0} inside)
+    std::vector<int> priced;              // indices into served whose errors price the collapse (sorted)
+    std::vector<double> pricedScale;      // per priced sample: the served weight it stands for over its own
   };
   struct EdgeState {
     uint64_t stamp = 0;
@@ -213,6 +225,8 @@ private:
   double weightOf(int sample) const;
   std::vector<std::pair<int, PlacementKind>> candidates(int a, int b, EdgeState& state) const;
   void assignServedSamples(int a, int b, Plan& plan) const;
+  void choosePricedSamples(int a, int b, Plan& plan) const;
+  std::vector<SampleReconstruction> pricingRequests(const Plan& plan) const;
   void costEdges(const std::vector<Edge>& edges, ProgressReporter* progress = nullptr);
   void ensureErrors(const std::vector<Triangle>& triangles, ProgressReporter* progress = nullptr);
   void ensureSampleErrors(const std::vector<SampleReconstruction>& requests, ProgressReporter* progress = nullptr);
@@ -244,6 +258,7 @@ private:
   std::shared_ptr<const WalkableRegion> region_;
   mutable std::vector<int8_t> sight_;
   std::vector<std::vector<int>> served_;
+  std::vector<uint64_t> pricingOrder_;  // per sample: a fixed pseudo-random rank, lowest priced first
   std::unordered_map<SampleKey, double, SampleKeyHash> sampleCache_;
   std::map<Edge, EdgeState> edges_;
   std::priority_queue<HeapEntry, std::vector<HeapEntry>, std::greater<HeapEntry>> heap_;
@@ -252,6 +267,12 @@ private:
   StopReason stopReason_ = StopReason::None;
   DecimationStatistics statistics_;
 };
+
+// A fixed pseudo-random rank of a sample (the same on every machine and
+// run): the decimator prices collapses and the refinement screens moves on
+// the samples of lowest rank, so the subsets are uniform random samples
+// that overlap from one candidate to the next.
+uint64_t samplePricingRank(int sample);
 
 // The triangles after replaying the first `steps` collapses of a log onto
 // the initial triangles (forward), or the initial triangles back from the

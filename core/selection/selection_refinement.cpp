@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <map>
@@ -26,11 +27,13 @@ public:
       : positions_(positions.begin(), positions.end()), weights_(weights.begin(), weights.end()), region_(region),
         errors_(errors), result_(result) {}
 
-  std::vector<SampleReconstruction> assignments(const ViewMesh& mesh) const {
+  // Every sample's, or only those of the screened subset.
+  std::vector<SampleReconstruction> assignments(const ViewMesh& mesh, bool screenedOnly = false) const {
     std::vector<SampleReconstruction> requests;
     const std::vector<int>& references = mesh.vertices();
     int hint = -1;
     for (int i = 0; i < int(positions_.size()); ++i) {
+      if (screenedOnly && !screened_[size_t(i)]) continue;
       if (std::binary_search(references.begin(), references.end(), i)) continue;
       hint = mesh.locate(positions_[size_t(i)], hint);
       requests.push_back({sortedTriangle(mesh.triangles()[size_t(hint)]), i});
@@ -73,6 +76,18 @@ public:
     return ViewMesh::tryDelaunay(positions_, references, region_);
   }
 
+  // The screened subset: the given share of the samples, those of lowest
+  // samplePricingRank; 0: none (no screening).
+  void screen(double share) {
+    screened_.assign(positions_.size(), 0);
+    const size_t count = size_t(std::ceil(share * double(positions_.size())));
+    if (count == 0) return;
+    std::vector<std::pair<uint64_t, int>> ranked;
+    for (int i = 0; i < int(positions_.size()); ++i) ranked.emplace_back(samplePricingRank(i), i);
+    std::sort(ranked.begin(), ranked.end());
+    for (size_t k = 0; k < std::min(count, ranked.size()); ++k) screened_[size_t(ranked[k].second)] = 1;
+  }
+
 private:
   std::vector<glm::dvec2> positions_;
   std::vector<double> weights_;
@@ -80,6 +95,7 @@ private:
   ReconstructionErrorSource& errors_;
   RefinementResult& result_;
   std::map<SampleReconstruction, double> known_;
+  std::vector<char> screened_;
 };
 
 std::vector<Triangle> without(const std::vector<Triangle>& from, const std::vector<Triangle>& remove) {
@@ -155,6 +171,7 @@ public:
         references_(mesh_.vertices()),
         result_(result),
         start_(mesh_) {
+    evaluator_.screen(options.screenedShare);
     const std::vector<SampleReconstruction> assignment = evaluator_.assignments(mesh_);
     evaluator_.compute({assignment});
     objective_ = startObjective_ = evaluator_.mean(assignment);
@@ -228,6 +245,8 @@ private:
           if (glm::length(positions_[size_t(c)] - positions_[size_t(moving)]) > result_.radius) continue;
           tries.push_back(replaced(moving, c));
         }
+        if (screening())
+          tries = screenedBest(tries, evaluate({references_}, Scope::Screened)[0].objective, kMovesScored);
         const std::vector<Candidate> candidates = evaluate(tries);
         const Candidate* best = nullptr;
         for (const Candidate& candidate : candidates) {
@@ -270,9 +289,32 @@ private:
     return result;
   }
 
+  // How many screened candidates are scored exactly: local moves of one
+  // reference, and exchanges.
+  static constexpr size_t kMovesScored = 2, kExchangesScored = 4;
+
+  enum class Scope { AllSamples, Screened };
+  bool screening() const { return options_.screenedShare > 0.0; }
+
+  // Of reference sets, the `keep` whose screened objective is lowest and
+  // below `below`, in the order given (so ties still go to the earlier).
+  std::vector<std::vector<int>> screenedBest(const std::vector<std::vector<int>>& sets, double below, size_t keep) {
+    const std::vector<Candidate> screened = evaluate(sets, Scope::Screened);
+    std::vector<std::pair<double, size_t>> ranked;
+    for (size_t k = 0; k < screened.size(); ++k) {
+      if (screened[k].objective < below) ranked.emplace_back(screened[k].objective, k);
+    }
+    std::sort(ranked.begin(), ranked.end());
+    ranked.resize(std::min(ranked.size(), keep));
+    std::sort(ranked.begin(), ranked.end(), [](const auto& x, const auto& y) { return x.second < y.second; });
+    std::vector<std::vector<int>> best;
+    for (const auto& [objective, k] : ranked) best.push_back(sets[k]);
+    return best;
+  }
+
   // Triangulates and scores reference sets, the errors they need in one
   // parallel batch; results in the order given.
-  std::vector<Candidate> evaluate(const std::vector<std::vector<int>>& sets) {
+  std::vector<Candidate> evaluate(const std::vector<std::vector<int>>& sets, Scope scope = Scope::AllSamples) {
     std::vector<Candidate> candidates(sets.size());
     std::vector<std::vector<SampleReconstruction>> assignments(sets.size());
     tbb::parallel_for(size_t(0), sets.size(), [&](size_t k) {
@@ -282,7 +324,7 @@ private:
         if (!std::binary_search(references_.begin(), references_.end(), r)) candidate.placement = r;
       }
       candidate.mesh = evaluator_.triangulate(sets[k]);
-      if (candidate.mesh) assignments[k] = evaluator_.assignments(*candidate.mesh);
+      if (candidate.mesh) assignments[k] = evaluator_.assignments(*candidate.mesh, scope == Scope::Screened);
     });
     evaluator_.compute(assignments);
     for (size_t k = 0; k < sets.size(); ++k) {
@@ -297,13 +339,14 @@ private:
   // the decimated mesh with.
   std::optional<std::pair<int, int>> bestExchange() {
     constexpr size_t kRemovals = 8, kInsertions = 16, kPairs = 16;
-    const std::vector<Candidate> base = evaluate({references_});
+    const Scope scope = screening() ? Scope::Screened : Scope::AllSamples;
+    const std::vector<Candidate> base = evaluate({references_}, scope);
     if (!base[0].mesh) return std::nullopt;
     std::vector<std::vector<int>> sets;
     for (int v : references_) sets.push_back(replaced(v, -1));
     const std::vector<int> insertions = exchangeCandidates(positions_, references_);
     for (int c : insertions) sets.push_back(replaced(-1, c));
-    const std::vector<Candidate> singles = evaluate(sets);
+    const std::vector<Candidate> singles = evaluate(sets, scope);
     std::vector<std::pair<double, int>> losses, gains;
     for (size_t k = 0; k < singles.size(); ++k) {
       if (!singles[k].mesh) continue;
@@ -326,15 +369,25 @@ private:
     pairs.resize(std::min(pairs.size(), kPairs));
     std::vector<std::vector<int>> tries;
     for (const auto& [estimate, v, c] : pairs) tries.push_back(replaced(v, c));
+    if (screening()) tries = screenedBest(tries, base[0].objective, kExchangesScored);
     const std::vector<Candidate> exchanged = evaluate(tries);
     size_t best = exchanged.size();
     for (size_t k = 0; k < exchanged.size(); ++k) {
       if (exchanged[k].objective < (best < exchanged.size() ? exchanged[best].objective : objective_)) best = k;
     }
     if (best == exchanged.size()) return std::nullopt;
-    const int removed = std::get<1>(pairs[best]), added = std::get<2>(pairs[best]);
+    const auto [removed, added] = exchangedPair(exchanged[best]);
     accept(removed, exchanged[best]);
     return std::make_pair(removed, added);
+  }
+
+  // The reference an exchange took out and the sample it put in.
+  std::pair<int, int> exchangedPair(const Candidate& candidate) const {
+    std::vector<int> removed;
+    std::set_difference(references_.begin(), references_.end(), candidate.references.begin(),
+                        candidate.references.end(), std::back_inserter(removed));
+    TRIWALK_CHECK(removed.size() == 1, "an exchange takes out one reference");
+    return {removed[0], candidate.placement};
   }
 
   // Makes a candidate the selection, logged as moving reference `moved`.

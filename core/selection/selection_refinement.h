@@ -36,6 +36,9 @@
 //       flag the references around v's old and new place
 //   keep the result if it is lower than the given mesh, else the given mesh
 //   with no moves
+//   screening (screenedShare > 0): each batch of candidates above is first
+//   scored over a fixed random share of the dense samples, and only the best
+//   few that beat the current selection there are scored over all of them
 //
 // Every move is logged like a collapse (kind "relocation", removed and
 // added triangles; the first against the given mesh), so the collapse log
@@ -69,6 +72,12 @@ struct RefinementOptions {
   // Exchanges between the local moves, at most this many; none: as many
   // as there are references (each may go once); 0: local moves only.
   std::optional<int> maxExchanges;
+  // Screening: candidates are first ranked by the objective over this
+  // share of the dense samples (a fixed random subset, see
+  // samplePricingRank), and only the best few are scored over all of them;
+  // 0: every candidate over all of them. A move is made only if its exact
+  // objective is lower, so screening can miss a move, never make a worse one.
+  double screenedShare = 0.0;
 };
 
 struct RefinementResult {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numeric>
 #include <set>
 #include <unordered_set>
 
@@ -79,7 +80,6 @@ EdgeCollapseDecimator::EdgeCollapseDecimator(const ViewMesh& mesh, DecimationErr
   }
   for (int v : mesh.vertices()) isVertex_[size_t(v)] = 1;
   vertexCount_ = mesh.vertexCount();
-  for (size_t s = 0; s < positions_.size(); ++s) pricingOrder_.push_back(samplePricingRank(int(s)));
   if (region_ && !region_->convex()) sight_.assign(positions_.size() * positions_.size(), -1);
   if (options_.cost == CollapseCost::ServedSamples) serveInitialSamples(mesh, costing);
   std::set<Edge> edges;
@@ -365,7 +365,7 @@ void EdgeCollapseDecimator::choosePricedSamples(int a, int b, Plan& plan) const 
     if (sample == a || sample == b) {
       chosen.emplace_back(int(i), 1.0);
     } else {
-      byTriangle[plan.servedBy[i]].emplace_back(pricingOrder_[size_t(sample)], int(i));
+      byTriangle[plan.servedBy[i]].emplace_back(samplePricingRank(sample), int(i));
     }
   }
   for (auto& [triangle, members] : byTriangle) {
@@ -388,10 +388,10 @@ void EdgeCollapseDecimator::choosePricedSamples(int a, int b, Plan& plan) const 
   }
 }
 
-std::vector<SampleReconstruction> EdgeCollapseDecimator::pricingRequests(const Plan& plan) const {
+std::vector<SampleReconstruction> EdgeCollapseDecimator::servedRequests(const Plan& plan,
+                                                                        std::span<const int> indices) const {
   std::vector<SampleReconstruction> requests;
-  for (int i : plan.priced)
-    requests.push_back({sortedTriangle(servingTriangle(plan, size_t(i))), plan.served[size_t(i)]});
+  for (int i : indices) requests.push_back({sortedTriangle(servingTriangle(plan, size_t(i))), plan.served[size_t(i)]});
   return requests;
 }
 
@@ -618,7 +618,7 @@ void EdgeCollapseDecimator::costEdges(const std::vector<Edge>& edges, ProgressRe
       if (options_.cost == CollapseCost::Centroid) {
         needed.insert(needed.end(), plan.added.begin(), plan.added.end());
       } else {
-        const std::vector<SampleReconstruction> requests = pricingRequests(plan);
+        const std::vector<SampleReconstruction> requests = servedRequests(plan, plan.priced);
         neededSamples.insert(neededSamples.end(), requests.begin(), requests.end());
       }
       plans.push_back({i, std::move(plan)});
@@ -714,7 +714,7 @@ std::optional<Collapse> EdgeCollapseDecimator::evaluateCollapse(int first, int s
   if (options_.cost == CollapseCost::Centroid) {
     ensureErrors(plan.added);
   } else {
-    ensureSampleErrors(pricingRequests(plan));
+    ensureSampleErrors(servedRequests(plan, plan.priced));
   }
   const auto [cost, error] = evaluate(plan);
   if (options_.maxError > 0.0 && error > options_.maxError) return std::nullopt;
@@ -766,10 +766,9 @@ void EdgeCollapseDecimator::apply(const Edge& edge, const EdgeState& state) {
   std::set<int> gainedSamples;  // existing triangles that now serve samples outside the mesh
   if (options_.cost == CollapseCost::ServedSamples) {
     if (plan.priced.size() < plan.served.size()) {  // the samples left out of the price have errors from now on
-      std::vector<SampleReconstruction> every;
-      for (size_t i = 0; i < plan.served.size(); ++i)
-        every.push_back({sortedTriangle(servingTriangle(plan, i)), plan.served[i]});
-      ensureSampleErrors(every);
+      std::vector<int> every(plan.served.size());
+      std::iota(every.begin(), every.end(), 0);
+      ensureSampleErrors(servedRequests(plan, every));
     }
     const int firstAdded = int(triangles_.size()) - int(plan.added.size());
     served_.resize(triangles_.size());
@@ -814,31 +813,34 @@ void EdgeCollapseDecimator::apply(const Edge& edge, const EdgeState& state) {
 
   // Re-cost the edges whose updated triangles changed (those touching p
   // or a neighbour of p), and those whose midpoint candidate changed: it
-  // was p, or a or b is now free and nearer.
+  // was p, or a or b is now free and nearer. Re-costing lazily, only the
+  // placement's edges are costed now, and those without a finite cost:
+  // they have no heap entry that would bring them back when they became
+  // valid. The others are costed again when they reach the heap's top.
+  const auto costedNow = [&](const Edge& other) {
+    if (!options_.lazyRecosting || other.first == plan.placement || other.second == plan.placement) return true;
+    const auto known = edges_.find(other);
+    return known == edges_.end() || !std::isfinite(known->second.cost);
+  };
   std::set<Edge> affected;
   std::vector<int> around = neighboursOf(plan.placement);
   around.push_back(plan.placement);
   if (placementHome >= 0) gainedSamples.insert(placementHome);
   for (int t : gainedSamples) around.insert(around.end(), triangles_[size_t(t)].begin(), triangles_[size_t(t)].end());
   for (int w : around) {
-    for (int x : neighboursOf(w)) affected.insert({std::min(w, x), std::max(w, x)});
+    for (int x : neighboursOf(w)) {
+      const Edge other{std::min(w, x), std::max(w, x)};
+      if (costedNow(other)) affected.insert(other);
+    }
   }
   for (const auto& [other, otherState] : edges_) {
+    if (!costedNow(other)) continue;
     const glm::dvec2 midpoint = 0.5 * (positions_[size_t(other.first)] + positions_[size_t(other.second)]);
     bool changed = otherState.midpointSample == plan.placement;
     for (int freed : {a, b}) {
       changed |= freed != plan.placement && glm::length(positions_[size_t(freed)] - midpoint) < otherState.midpointDistance;
     }
     if (changed) affected.insert(other);
-  }
-  if (options_.lazyRecosting) {
-    // An edge without a finite cost has no heap entry that would bring it
-    // back when it became valid, so it is costed now as well.
-    std::erase_if(affected, [&](const Edge& other) {
-      if (other.first == plan.placement || other.second == plan.placement) return false;
-      const auto known = edges_.find(other);
-      return known != edges_.end() && std::isfinite(known->second.cost);
-    });
   }
   costEdges(std::vector<Edge>(affected.begin(), affected.end()));
 }

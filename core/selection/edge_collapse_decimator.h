@@ -54,6 +54,7 @@
 #include <optional>
 #include <queue>
 #include <set>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
@@ -226,7 +227,8 @@ private:
   std::vector<std::pair<int, PlacementKind>> candidates(int a, int b, EdgeState& state) const;
   void assignServedSamples(int a, int b, Plan& plan) const;
   void choosePricedSamples(int a, int b, Plan& plan) const;
-  std::vector<SampleReconstruction> pricingRequests(const Plan& plan) const;
+  // The reconstructions giving the errors of plan.served[i] for i in indices.
+  std::vector<SampleReconstruction> servedRequests(const Plan& plan, std::span<const int> indices) const;
   void costEdges(const std::vector<Edge>& edges, ProgressReporter* progress = nullptr);
   void ensureErrors(const std::vector<Triangle>& triangles, ProgressReporter* progress = nullptr);
   void ensureSampleErrors(const std::vector<SampleReconstruction>& requests, ProgressReporter* progress = nullptr);
@@ -258,7 +260,6 @@ private:
   std::shared_ptr<const WalkableRegion> region_;
   mutable std::vector<int8_t> sight_;
   std::vector<std::vector<int>> served_;
-  std::vector<uint64_t> pricingOrder_;  // per sample: a fixed pseudo-random rank, lowest priced first
   std::unordered_map<SampleKey, double, SampleKeyHash> sampleCache_;
   std::map<Edge, EdgeState> edges_;
   std::priority_queue<HeapEntry, std::vector<HeapEntry>, std::greater<HeapEntry>> heap_;

@@ -200,6 +200,7 @@ public:
     mesh_ = start_;
     references_ = start_.vertices();
     objective_ = startObjective_;
+    screenedObjective_.reset();
   }
 
   // Local moves until none helps; then, as long as an exchange helps (at
@@ -245,8 +246,7 @@ private:
           if (glm::length(positions_[size_t(c)] - positions_[size_t(moving)]) > result_.radius) continue;
           tries.push_back(replaced(moving, c));
         }
-        if (screening())
-          tries = screenedBest(tries, evaluate({references_}, Scope::Screened)[0].objective, kMovesScored);
+        if (screening()) tries = screenedBest(tries, screenedObjective(), kMovesScored);
         const std::vector<Candidate> candidates = evaluate(tries);
         const Candidate* best = nullptr;
         for (const Candidate& candidate : candidates) {
@@ -295,6 +295,13 @@ private:
 
   enum class Scope { AllSamples, Screened };
   bool screening() const { return options_.screenedShare > 0.0; }
+
+  // The screened objective of the references, computed once per selection
+  // (the errors come from the cache, the triangulation would not).
+  double screenedObjective() {
+    if (!screenedObjective_) screenedObjective_ = evaluate({references_}, Scope::Screened)[0].objective;
+    return *screenedObjective_;
+  }
 
   // Of reference sets, the `keep` whose screened objective is lowest and
   // below `below`, in the order given (so ties still go to the earlier).
@@ -407,6 +414,7 @@ private:
     references_ = candidate.references;
     mesh_ = *candidate.mesh;
     objective_ = candidate.objective;
+    screenedObjective_.reset();
   }
 
   std::span<const glm::dvec2> positions_;
@@ -415,6 +423,7 @@ private:
   ViewMesh mesh_;
   std::vector<int> references_;  // sorted
   double objective_ = 0.0;
+  std::optional<double> screenedObjective_;  // of references_, when screening asked for it
   RefinementResult& result_;
   ViewMesh start_;  // the given mesh
   double startObjective_ = 0.0;

@@ -509,33 +509,6 @@ TEST_CASE("screened refinement: fewer errors, only moves that lower the exact ob
           screened.objectiveAfter, " with ", screenedErrors);
 }
 
-TEST_CASE("screened refinement scores the best screened candidate exactly, even when it seems no better there") {
-  const TwoRooms rooms;
-  // Twelve references in the left room, as above, screened on a single
-  // sample whose error no move changes: only candidates scored over all
-  // the samples can show that a move helps (or one that makes that sample
-  // a reference, once).
-  std::vector<int> references;
-  for (int i = 0; i < int(rooms.positions.size()) && references.size() < 12; ++i) {
-    if (rooms.positions[size_t(i)].x < 1.0 && std::fmod(double(i), 5.0) == 0.0) references.push_back(i);
-  }
-  const ViewMesh start = ViewMesh::delaunay(rooms.positions, references, "two rooms", &rooms.region);
-  int screenedSample = 0;
-  for (int i = 1; i < int(rooms.positions.size()); ++i) {
-    if (samplePricingRank(i) < samplePricingRank(screenedSample)) screenedSample = i;
-  }
-  FormulaErrors errors([&](const Triangle& t, int destination) {
-    return destination == screenedSample ? 1.0 : rooms.formula(t, destination);
-  });
-  RefinementOptions options;
-  options.region = &rooms.region;
-  options.maxExchanges = 0;
-  options.screenedShare = 1e-9;
-  const RefinementResult result = refineSelection(rooms.positions, start.triangles(), errors, options);
-  CHECK(result.moves.size() >= 2);
-  CHECK(result.objectiveAfter < 0.9 * result.objectiveBefore);
-}
-
 TEST_CASE(
     "a captured data set: decimation then refinement, the same with 1 and 2 threads (grid and simplified source "
     "meshes), and through selection.json") {

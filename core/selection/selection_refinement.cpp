@@ -303,23 +303,16 @@ private:
     return *screenedObjective_;
   }
 
-  // Of reference sets, the one whose screened objective is lowest, and up
-  // to `keep` - 1 more of the lowest if they are below `below`, in the
-  // order given (so ties still go to the earlier). The lowest is kept
-  // whatever its screened objective: the subset's errors are a noisy
-  // estimate of the whole's, and a small real gain is often a loss there,
-  // while the ranking of candidates over the same subset is far more
-  // reliable than their comparison with the selection's objective.
+  // Of reference sets, the `keep` whose screened objective is lowest and
+  // below `below`, in the order given (so ties still go to the earlier).
   std::vector<std::vector<int>> screenedBest(const std::vector<std::vector<int>>& sets, double below, size_t keep) {
     const std::vector<Candidate> screened = evaluate(sets, Scope::Screened);
     std::vector<std::pair<double, size_t>> ranked;
     for (size_t k = 0; k < screened.size(); ++k) {
-      if (screened[k].mesh) ranked.emplace_back(screened[k].objective, k);
+      if (screened[k].objective < below) ranked.emplace_back(screened[k].objective, k);
     }
     std::sort(ranked.begin(), ranked.end());
-    size_t kept = std::min<size_t>(ranked.size(), 1);
-    while (kept < std::min(ranked.size(), keep) && ranked[kept].first < below) ++kept;
-    ranked.resize(kept);
+    ranked.resize(std::min(ranked.size(), keep));
     std::sort(ranked.begin(), ranked.end(), [](const auto& x, const auto& y) { return x.second < y.second; });
     std::vector<std::vector<int>> best;
     for (const auto& [objective, k] : ranked) best.push_back(sets[k]);

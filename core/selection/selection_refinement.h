@@ -37,9 +37,8 @@
 //   keep the result if it is lower than the given mesh, else the given mesh
 //   with no moves
 //   screening (screenedShare > 0): each batch of candidates above is first
-//   scored over a fixed random share of the dense samples; the best there,
-//   and the next few if they beat the current selection there, are scored
-//   over all of them
+//   scored over a fixed random share of the dense samples, and only the best
+//   few that beat the current selection there are scored over all of them
 //
 // Every move is logged like a collapse (kind "relocation", removed and
 // added triangles; the first against the given mesh), so the collapse log
@@ -75,9 +74,8 @@ struct RefinementOptions {
   std::optional<int> maxExchanges;
   // Screening: candidates are first ranked by the objective over this
   // share of the dense samples (a fixed random subset, see
-  // samplePricingRank), and only the best (and the next few if they beat
-  // the selection on the share) are scored over all of them; 0: every
-  // candidate over all of them. A move is made only if its exact
+  // samplePricingRank), and only the best few are scored over all of them;
+  // 0: every candidate over all of them. A move is made only if its exact
   // objective is lower, so screening can miss a move, never make a worse one.
   double screenedShare = 0.0;
 };

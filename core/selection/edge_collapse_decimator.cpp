@@ -817,10 +817,9 @@ void EdgeCollapseDecimator::apply(const Edge& edge, const EdgeState& state) {
   // placement's edges are costed now, and those without a finite cost:
   // they have no heap entry that would bring them back when they became
   // valid. The others are costed again when they reach the heap's top.
-  const auto costedNow = [&](const Edge& other) {
+  const auto costedNow = [&](const Edge& other, const EdgeState* known) {
     if (!options_.lazyRecosting || other.first == plan.placement || other.second == plan.placement) return true;
-    const auto known = edges_.find(other);
-    return known == edges_.end() || !std::isfinite(known->second.cost);
+    return !known || !std::isfinite(known->cost);
   };
   std::set<Edge> affected;
   std::vector<int> around = neighboursOf(plan.placement);
@@ -830,11 +829,12 @@ void EdgeCollapseDecimator::apply(const Edge& edge, const EdgeState& state) {
   for (int w : around) {
     for (int x : neighboursOf(w)) {
       const Edge other{std::min(w, x), std::max(w, x)};
-      if (costedNow(other)) affected.insert(other);
+      const auto known = edges_.find(other);
+      if (costedNow(other, known == edges_.end() ? nullptr : &known->second)) affected.insert(other);
     }
   }
   for (const auto& [other, otherState] : edges_) {
-    if (!costedNow(other)) continue;
+    if (!costedNow(other, &otherState)) continue;
     const glm::dvec2 midpoint = 0.5 * (positions_[size_t(other.first)] + positions_[size_t(other.second)]);
     bool changed = otherState.midpointSample == plan.placement;
     for (int freed : {a, b}) {

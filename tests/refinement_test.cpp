@@ -405,6 +405,20 @@ struct TwoRooms {
   ViewMesh dense() const { return ViewMesh::delaunay(positions, {}, "two rooms", &region); }
 };
 
+// Twelve references of the two rooms crowded into the left one: most must
+// move, some across the doorway (exchanges).
+ViewMesh crowdedLeftRoom(const TwoRooms& rooms) {
+  std::vector<int> references;
+  for (int i = 0; i < int(rooms.positions.size()) && references.size() < 12; ++i) {
+    if (rooms.positions[size_t(i)].x < 1.0 && std::fmod(double(i), 5.0) == 0.0) references.push_back(i);
+  }
+  const int corners[] = {0, 9};  // (0.15, 0.15) and (0.15, 2.85): keep the left wall covered
+  references.insert(references.end(), std::begin(corners), std::end(corners));
+  std::sort(references.begin(), references.end());
+  references.erase(std::unique(references.begin(), references.end()), references.end());
+  return ViewMesh::delaunay(rooms.positions, references, "two rooms", &rooms.region);
+}
+
 }  // namespace
 
 TEST_CASE(
@@ -471,22 +485,13 @@ TEST_CASE("a lazily re-costed decimator makes each collapse at the cost a fresh 
 
 TEST_CASE("screened refinement: fewer errors, only moves that lower the exact objective") {
   const TwoRooms rooms;
-  // Twelve references crowded into the left room: most must move, some
-  // across the doorway (exchanges).
-  std::vector<int> references;
-  for (int i = 0; i < int(rooms.positions.size()) && references.size() < 12; ++i) {
-    if (rooms.positions[size_t(i)].x < 1.0 && std::fmod(double(i), 5.0) == 0.0) references.push_back(i);
-  }
-  const int corners[] = {0, 9};  // (0.15, 0.15) and (0.15, 2.85): keep the left wall covered
-  references.insert(references.end(), std::begin(corners), std::end(corners));
-  std::sort(references.begin(), references.end());
-  references.erase(std::unique(references.begin(), references.end()), references.end());
-  const ViewMesh start = ViewMesh::delaunay(rooms.positions, references, "two rooms", &rooms.region);
+  const ViewMesh start = crowdedLeftRoom(rooms);
   auto refine = [&](double share) {
     FormulaErrors errors(rooms.formula);
     RefinementOptions options;
     options.region = &rooms.region;
     options.screenedShare = share;
+    options.pricedSamples = 0;  // exact, without screening
     const RefinementResult result = refineSelection(rooms.positions, start.triangles(), errors, options);
     return std::pair(result, errors.computed);
   };
@@ -509,6 +514,47 @@ TEST_CASE("screened refinement: fewer errors, only moves that lower the exact ob
           screened.objectiveAfter, " with ", screenedErrors);
 }
 
+TEST_CASE("priced refinement: fewer errors, only moves that lower the exact objective, exact when the subset is all") {
+  const TwoRooms rooms;
+  const ViewMesh start = crowdedLeftRoom(rooms);
+  auto refine = [&](int priced) {
+    FormulaErrors errors(rooms.formula);
+    RefinementOptions options;
+    options.region = &rooms.region;
+    options.pricedSamples = priced;
+    const RefinementResult result = refineSelection(rooms.positions, start.triangles(), errors, options);
+    return std::pair(result, errors.computed);
+  };
+  const auto [exact, exactErrors] = refine(0);
+  // A subset larger than any candidate changes: every candidate is exact,
+  // and so is every move.
+  const auto [all, allErrors] = refine(100000);
+  REQUIRE(all.moves.size() == exact.moves.size());
+  for (size_t i = 0; i < exact.moves.size(); ++i) {
+    CHECK(all.moves[i].first == exact.moves[i].first);
+    CHECK(all.moves[i].placement == exact.moves[i].placement);
+    CHECK(all.moves[i].cost == exact.moves[i].cost);
+  }
+  CHECK(all.objectiveAfter == exact.objectiveAfter);
+  // 8 samples per candidate: most candidates change dozens; those whose
+  // estimate comes within two standard errors of the selection are scored
+  // exactly.
+  const auto [priced, pricedErrors] = refine(8);
+  REQUIRE(priced.moves.size() >= 3);
+  CHECK(priced.exchanges >= 1);
+  CHECK(pricedErrors < exactErrors * 3 / 4);
+  double previous = priced.objectiveBefore;
+  for (const Collapse& move : priced.moves) {
+    CHECK(move.cost < previous);
+    previous = move.cost;
+  }
+  const ViewMesh final(rooms.positions, priced.triangles, sharedRegion(&rooms.region));
+  CHECK(priced.objectiveAfter == doctest::Approx(meanError(final, rooms.formula)).epsilon(1e-12));
+  CHECK(priced.objectiveAfter < 1.02 * exact.objectiveAfter);
+  MESSAGE("refinement: exact ", exact.objectiveAfter, " with ", exactErrors, " errors; priced on 8 ",
+          priced.objectiveAfter, " with ", pricedErrors);
+}
+
 TEST_CASE(
     "a captured data set: decimation then refinement, the same with 1 and 2 threads (grid and simplified source "
     "meshes), and through selection.json") {
@@ -527,12 +573,12 @@ TEST_CASE(
     options.maxError = 0.0;     // the refinement has references on the boundary to move
     options.targetSamples = 5;
     options.fixedBoundary = true;
-    options.pricedSamples = 2;  // so that pricing subsets, and screening, have work here
+    options.pricedSamples = 2;  // so that pricing subsets have work here, in the collapses and the refinement
     EdgeCollapseDecimator decimator(initial, DecimationErrors{&errors, &errors}, options);
     decimator.run();
     const ViewMesh decimated = decimator.mesh();
     RefinementResult refinement =
-        refineSelection(positions, decimated.triangles(), errors, {10.0, 8, {}, nullptr, {}, 0.5});
+        refineSelection(positions, decimated.triangles(), errors, {10.0, 8, {}, nullptr, {}, 0.0, 2});
     std::vector<Collapse> log = decimator.log();
     log.insert(log.end(), refinement.moves.begin(), refinement.moves.end());
     return std::pair(log, refinement);

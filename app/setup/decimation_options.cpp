@@ -76,6 +76,14 @@ void addSelectionOptions(CLI::App& command, SelectionArguments& arguments) {
                   "every candidate on all of them")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
+  command
+      .add_option("--refine-priced", arguments.refinePriced,
+                  "Without --refine-screen: price each candidate move of the refinement on about this many of the "
+                  "samples whose triangle it changes (a fixed random subset of each new triangle's, against their "
+                  "errors now), and score on all of them only those within two standard errors of the selection; "
+                  "0: every candidate on all of them")
+      ->capture_default_str()
+      ->check(nonNegativeNumber());
 }
 
 SelectionSettings selectionSettings(const SelectionArguments& arguments, double maxError, int targetSamples) {
@@ -92,6 +100,7 @@ SelectionSettings selectionSettings(const SelectionArguments& arguments, double 
   settings.refinement.radius = arguments.refineRadius;
   settings.refinement.maxExchanges = arguments.exchanges;
   settings.refinement.screenedShare = arguments.refineScreen;
+  settings.refinement.pricedSamples = arguments.refinePriced;
   return settings;
 }
 
@@ -111,6 +120,7 @@ nlohmann::json describeSelectionSettings(const SelectionSettings& settings, cons
           {"exchanges", settings.refinement.maxExchanges ? nlohmann::json(*settings.refinement.maxExchanges)
                                                          : nlohmann::json("auto")},
           {"refine_screen", settings.refinement.screenedShare},
+          {"refine_priced", settings.refinement.pricedSamples},
           {"error_width", errors.width},
           {"quality", describeErrorSettings(errors)}};
 }

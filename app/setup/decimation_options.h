@@ -33,6 +33,7 @@ struct SelectionArguments {
   std::optional<double> refineRadius;  // none: neighbourhoodRadius
   std::optional<int> exchanges;        // none: as many as references
   double refineScreen = RefinementOptions{}.screenedShare;
+  int refinePriced = RefinementOptions{}.pricedSamples;
 };
 
 void addSelectionOptions(CLI::App& command, SelectionArguments& arguments);

@@ -25,15 +25,6 @@ bool hasVertex(const Triangle& t, int v) { return t[0] == v || t[1] == v || t[2]
 
 }  // namespace
 
-// SplitMix64's finaliser: well mixed, so that the lowest ranks of any set
-// of samples are a uniform random subset of it.
-uint64_t samplePricingRank(int sample) {
-  uint64_t value = uint64_t(sample) + 0x9e3779b97f4a7c15ull;
-  value = (value ^ (value >> 30)) * 0xbf58476d1ce4e5b9ull;
-  value = (value ^ (value >> 27)) * 0x94d049bb133111ebull;
-  return value ^ (value >> 31);
-}
-
 const char* placementName(PlacementKind kind) {
   switch (kind) {
     case PlacementKind::First: return "first";
@@ -348,43 +339,31 @@ void EdgeCollapseDecimator::assignServedSamples(int a, int b, Plan& plan) const 
 // (their errors are shared through the cache), and a late collapse, whose
 // triangles serve hundreds of samples, costs what an early one does.
 void EdgeCollapseDecimator::choosePricedSamples(int a, int b, Plan& plan) const {
-  plan.priced.clear();
-  plan.pricedScale.clear();
-  const size_t limit = size_t(options_.pricedSamples);
-  const size_t others = plan.served.size() - size_t(std::count_if(plan.served.begin(), plan.served.end(),
-                                                                  [&](int s) { return s == a || s == b; }));
-  if (limit == 0 || others <= limit) {
-    for (size_t i = 0; i < plan.served.size(); ++i) plan.priced.push_back(int(i));
-    plan.pricedScale.assign(plan.served.size(), 1.0);
-    return;
-  }
-  std::map<int, std::vector<std::pair<uint64_t, int>>> byTriangle;  // servedBy -> (rank, index)
-  std::vector<std::pair<int, double>> chosen;                       // (index, scale)
+  // The vertices the collapse frees are always priced; the others by a
+  // stratified subset, by the triangle that serves them after it.
+  std::vector<PricedSample> chosen;  // index into served
+  std::vector<int> others, strata, indices;
   for (size_t i = 0; i < plan.served.size(); ++i) {
     const int sample = plan.served[i];
     if (sample == a || sample == b) {
-      chosen.emplace_back(int(i), 1.0);
+      chosen.push_back({int(i), 1.0});
     } else {
-      byTriangle[plan.servedBy[i]].emplace_back(samplePricingRank(sample), int(i));
+      others.push_back(sample);
+      strata.push_back(plan.servedBy[i]);
+      indices.push_back(int(i));
     }
   }
-  for (auto& [triangle, members] : byTriangle) {
-    const size_t keep = std::max<size_t>(1, (limit * members.size() + others - 1) / others);
-    std::sort(members.begin(), members.end());
-    double all = 0.0, kept = 0.0;
-    for (size_t k = 0; k < members.size(); ++k) {
-      const double weight = weightOf(plan.served[size_t(members[k].second)]);
-      all += weight;
-      if (k < keep) kept += weight;
-    }
-    for (size_t k = 0; k < std::min(keep, members.size()); ++k) {
-      chosen.emplace_back(members[k].second, kept > 0.0 ? all / kept : 0.0);
-    }
+  for (const PricedSample& other :
+       stratifiedPricing(others, strata, size_t(options_.pricedSamples), [this](int s) { return weightOf(s); })) {
+    chosen.push_back({indices[size_t(other.index)], other.scale});
   }
-  std::sort(chosen.begin(), chosen.end());
-  for (const auto& [i, scale] : chosen) {
-    plan.priced.push_back(i);
-    plan.pricedScale.push_back(scale);
+  std::sort(chosen.begin(), chosen.end(),
+            [](const PricedSample& x, const PricedSample& y) { return x.index < y.index; });
+  plan.priced.clear();
+  plan.pricedScale.clear();
+  for (const PricedSample& sample : chosen) {
+    plan.priced.push_back(sample.index);
+    plan.pricedScale.push_back(sample.scale);
   }
 }
 

@@ -45,6 +45,7 @@
 
 #include "core/geometry/planar_geometry.h"
 #include "core/geometry/view_mesh.h"
+#include "core/selection/sample_pricing.h"
 #include "core/selection/triangle_error.h"
 
 #include <cstdint>
@@ -268,12 +269,6 @@ private:
   StopReason stopReason_ = StopReason::None;
   DecimationStatistics statistics_;
 };
-
-// A fixed pseudo-random rank of a sample (the same on every machine and
-// run): the decimator prices collapses and the refinement screens moves on
-// the samples of lowest rank, so the subsets are uniform random samples
-// that overlap from one candidate to the next.
-uint64_t samplePricingRank(int sample);
 
 // The triangles after replaying the first `steps` collapses of a log onto
 // the initial triangles (forward), or the initial triangles back from the

@@ -1,6 +1,7 @@
 #include "core/selection/selection_refinement.h"
 
 #include "core/geometry/view_mesh.h"
+#include "core/selection/sample_pricing.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 
@@ -19,6 +20,21 @@ namespace triwalk {
 
 namespace {
 
+// The variance of values about their group's mean, pooled over groups
+// (degrees of freedom: values minus groups); +inf with too few values to tell.
+double sampleVariance(const std::map<int, std::vector<double>>& groups) {
+  double squares = 0.0;
+  size_t count = 0;
+  for (const auto& [group, values] : groups) {
+    double mean = 0.0;
+    for (double v : values) mean += v;
+    mean /= double(values.size());
+    for (double v : values) squares += (v - mean) * (v - mean);
+    count += values.size() - 1;
+  }
+  return count > 0 ? squares / double(count) : std::numeric_limits<double>::infinity();
+}
+
 // Which triangle reconstructs each dense sample that is not a reference.
 class ObjectiveEvaluator {
 public:
@@ -27,8 +43,10 @@ public:
       : positions_(positions.begin(), positions.end()), weights_(weights.begin(), weights.end()), region_(region),
         errors_(errors), result_(result) {}
 
-  // Every sample's, or only those of the screened subset.
-  std::vector<SampleReconstruction> assignments(const ViewMesh& mesh, bool screenedOnly = false) const {
+  // Every sample's, or only those of the screened subset; triangleIds, if
+  // given, receives the index in mesh of each one's triangle.
+  std::vector<SampleReconstruction> assignments(const ViewMesh& mesh, bool screenedOnly = false,
+                                                std::vector<int>* triangleIds = nullptr) const {
     std::vector<SampleReconstruction> requests;
     const std::vector<int>& references = mesh.vertices();
     int hint = -1;
@@ -37,8 +55,120 @@ public:
       if (std::binary_search(references.begin(), references.end(), i)) continue;
       hint = mesh.locate(positions_[size_t(i)], hint);
       requests.push_back({sortedTriangle(mesh.triangles()[size_t(hint)]), i});
+      if (triangleIds) triangleIds->push_back(hint);
     }
     return requests;
+  }
+
+  // Makes mesh, whose errors are computed, the selection that candidates
+  // are priced against: which triangle serves each sample there, and the
+  // weighted sum of their errors.
+  void setCurrent(const ViewMesh& mesh) {
+    currentServing_.assign(positions_.size(), kReference);
+    currentSum_ = currentWeight_ = 0.0;
+    for (const SampleReconstruction& request : assignments(mesh)) {
+      currentServing_[size_t(request.destination)] = request.references;
+      currentSum_ += weightOf(request.destination) * known_.at(request);
+      currentWeight_ += weightOf(request.destination);
+    }
+  }
+
+  // A candidate mesh priced against the current selection: its samples
+  // whose serving triangle changes are priced on a stratified subset of at
+  // most `limit` (by their new triangle); the references it frees are
+  // always priced, the samples it makes references leave the mean. Exact
+  // (every changed sample priced): the whole assignment is scored instead.
+  struct PricedChange {
+    std::vector<SampleReconstruction> assignment;  // every sample's
+    bool exact = true;
+    std::vector<SampleReconstruction> priced;  // when not exact: the errors that price it
+    std::vector<double> scales;                // per priced: the weight it stands for over its own
+    std::vector<int> strata;                   // per priced: its new triangle (-1: a freed reference, exact)
+    std::vector<int> stratumSizes;             // per priced: how many changed samples that triangle serves
+    std::vector<int> leaving;                  // samples that become references
+  };
+  PricedChange pricedChange(const ViewMesh& mesh, size_t limit) const {
+    PricedChange change;
+    std::vector<int> triangleIds;
+    change.assignment = assignments(mesh, false, &triangleIds);
+    std::vector<int> changed, strata;
+    std::vector<size_t> positionInAssignment;
+    for (size_t j = 0; j < change.assignment.size(); ++j) {
+      const SampleReconstruction& request = change.assignment[j];
+      const Triangle& now = currentServing_[size_t(request.destination)];
+      if (now == kReference) {
+        change.priced.push_back(request);
+        change.scales.push_back(1.0);
+        change.strata.push_back(-1);
+        change.stratumSizes.push_back(1);
+      } else if (now != request.references) {
+        changed.push_back(request.destination);
+        strata.push_back(triangleIds[j]);
+        positionInAssignment.push_back(j);
+      }
+    }
+    const std::vector<PricedSample> chosen =
+        stratifiedPricing(changed, strata, limit, [this](int sample) { return weightOf(sample); });
+    change.exact = chosen.size() == changed.size();
+    if (change.exact) return change;
+    std::map<int, int> sizes;
+    for (int stratum : strata) ++sizes[stratum];
+    for (const PricedSample& sample : chosen) {
+      const int stratum = strata[size_t(sample.index)];
+      change.priced.push_back(change.assignment[positionInAssignment[size_t(sample.index)]]);
+      change.scales.push_back(sample.scale);
+      change.strata.push_back(stratum);
+      change.stratumSizes.push_back(sizes[stratum]);
+    }
+    for (int v : mesh.vertices()) {
+      if (currentServing_[size_t(v)] != kReference) change.leaving.push_back(v);
+    }
+    return change;
+  }
+
+  // The estimated objective of a priced change whose errors are computed,
+  // and its standard error: each new triangle's total change is estimated
+  // from a simple random sample of its changed samples, whose variance
+  // (with the finite-population correction) the sample's own spread gives;
+  // a triangle priced on one sample borrows the spread of all of them.
+  struct Estimate {
+    double objective = 0.0;
+    double standardError = 0.0;
+  };
+  Estimate estimate(const PricedChange& change) const {
+    double sum = currentSum_, weight = currentWeight_;
+    std::map<int, std::vector<double>> changes;    // per new triangle: w (after - before) of its priced samples
+    std::map<int, std::pair<double, int>> strata;  // per new triangle: (scale, changed samples)
+    for (size_t k = 0; k < change.priced.size(); ++k) {
+      const SampleReconstruction& request = change.priced[k];
+      const Triangle& before = currentServing_[size_t(request.destination)];
+      const double w = weightOf(request.destination);
+      if (before == kReference) {
+        sum += w * known_.at(request);
+        weight += w;
+      } else {
+        const double difference = w * (known_.at(request) - known_.at({before, request.destination}));
+        sum += change.scales[k] * difference;
+        changes[change.strata[k]].push_back(difference);
+        strata[change.strata[k]] = {change.scales[k], change.stratumSizes[k]};
+      }
+    }
+    for (int v : change.leaving) {
+      sum -= weightOf(v) * known_.at({currentServing_[size_t(v)], v});
+      weight -= weightOf(v);
+    }
+    if (weight <= 0.0) return {0.0, 0.0};
+    const double pooled = sampleVariance(changes);
+    double variance = 0.0;
+    for (const auto& [stratum, values] : changes) {
+      const auto [scale, size] = strata.at(stratum);
+      const double n = double(values.size());
+      const double unsampled = 1.0 - n / double(size);
+      if (unsampled <= 0.0) continue;  // every changed sample of the triangle priced: exact
+      const double spread = values.size() > 1 ? sampleVariance({{stratum, values}}) : pooled;
+      variance += scale * scale * n * spread * unsampled;
+    }
+    return {sum / weight, std::sqrt(variance) / weight};
   }
 
   // Computes, in one parallel batch, every error the given assignments
@@ -65,7 +195,7 @@ public:
   double mean(const std::vector<SampleReconstruction>& assignment) const {
     double sum = 0.0, weightSum = 0.0;
     for (const SampleReconstruction& request : assignment) {
-      const double weight = weights_.empty() ? 1.0 : weights_[size_t(request.destination)];
+      const double weight = weightOf(request.destination);
       sum += weight * known_.at(request);
       weightSum += weight;
     }
@@ -89,6 +219,10 @@ public:
   }
 
 private:
+  static constexpr Triangle kReference = {-1, -1, -1};  // in currentServing_: a reference, served by none
+
+  double weightOf(int sample) const { return weights_.empty() ? 1.0 : weights_[size_t(sample)]; }
+
   std::vector<glm::dvec2> positions_;
   std::vector<double> weights_;
   const WalkableRegion* region_;
@@ -96,6 +230,8 @@ private:
   RefinementResult& result_;
   std::map<SampleReconstruction, double> known_;
   std::vector<char> screened_;
+  std::vector<Triangle> currentServing_;  // per sample, in the current selection
+  double currentSum_ = 0.0, currentWeight_ = 0.0;
 };
 
 std::vector<Triangle> without(const std::vector<Triangle>& from, const std::vector<Triangle>& remove) {
@@ -175,6 +311,7 @@ public:
     const std::vector<SampleReconstruction> assignment = evaluator_.assignments(mesh_);
     evaluator_.compute({assignment});
     objective_ = startObjective_ = evaluator_.mean(assignment);
+    evaluator_.setCurrent(mesh_);
   }
 
   double objective() const { return objective_; }
@@ -190,6 +327,7 @@ public:
     if (!delaunay[0].mesh) return;
     mesh_ = *delaunay[0].mesh;
     objective_ = delaunay[0].objective;
+    evaluator_.setCurrent(mesh_);
   }
 
   // Back to the given mesh, with no moves, unless the moves ended below it.
@@ -201,6 +339,7 @@ public:
     references_ = start_.vertices();
     objective_ = startObjective_;
     screenedObjective_.reset();
+    evaluator_.setCurrent(mesh_);
   }
 
   // Local moves until none helps; then, as long as an exchange helps (at
@@ -246,12 +385,7 @@ private:
           if (glm::length(positions_[size_t(c)] - positions_[size_t(moving)]) > result_.radius) continue;
           tries.push_back(replaced(moving, c));
         }
-        if (screening()) tries = screenedBest(tries, screenedObjective(), kMovesScored);
-        const std::vector<Candidate> candidates = evaluate(tries);
-        const Candidate* best = nullptr;
-        for (const Candidate& candidate : candidates) {
-          if (candidate.objective < (best ? best->objective : objective_)) best = &candidate;
-        }
+        const std::optional<Candidate> best = bestBelowNow(tries, Moves::Local);
         if (!best) continue;
         const int placement = best->placement;
         for (int v : neighboursOf(mesh_, moving)) flagged.insert(v);
@@ -276,6 +410,8 @@ private:
     std::optional<ViewMesh> mesh;
     double objective = std::numeric_limits<double>::infinity();
     int placement = -1;
+    bool exact = true;           // objective over every sample (not screened, not priced on a subset)
+    double standardError = 0.0;  // of a priced objective
   };
 
   // The references with one replaced (from -1: one added; to -1: one removed), sorted.
@@ -293,8 +429,9 @@ private:
   // reference, and exchanges.
   static constexpr size_t kMovesScored = 2, kExchangesScored = 4;
 
-  enum class Scope { AllSamples, Screened };
+  enum class Scope { AllSamples, Screened, Priced };
   bool screening() const { return options_.screenedShare > 0.0; }
+  bool pricing() const { return options_.pricedSamples > 0; }
 
   // The screened objective of the references, computed once per selection
   // (the errors come from the cache, the triangulation would not).
@@ -306,24 +443,82 @@ private:
   // Of reference sets, the `keep` whose screened objective is lowest and
   // below `below`, in the order given (so ties still go to the earlier).
   std::vector<std::vector<int>> screenedBest(const std::vector<std::vector<int>>& sets, double below, size_t keep) {
-    const std::vector<Candidate> screened = evaluate(sets, Scope::Screened);
+    std::vector<std::vector<int>> kept;
+    for (Candidate& candidate : best(evaluate(sets, Scope::Screened), below, keep)) {
+      kept.push_back(std::move(candidate.references));
+    }
+    return kept;
+  }
+
+  // Of reference sets, the one whose exact objective is lowest and below
+  // the current one (ties: the earlier), or none. Screening ranks the sets
+  // first and scores only the best few exactly; pricing (local
+  // moves only) scores exactly those its estimate cannot rule out.
+  enum class Moves { Local, Exchanges };
+  std::optional<Candidate> bestBelowNow(const std::vector<std::vector<int>>& sets, Moves moves) {
+    std::vector<Candidate> candidates;
+    if (screening()) {
+      candidates =
+          evaluate(screenedBest(sets, screenedObjective(), moves == Moves::Local ? kMovesScored : kExchangesScored));
+    } else if (pricing() && moves == Moves::Local) {
+      candidates = exactly(plausiblyBelowNow(evaluate(sets, Scope::Priced)));
+    } else {
+      candidates = evaluate(sets);
+    }
+    std::optional<Candidate> lowest;
+    for (Candidate& candidate : candidates) {
+      if (candidate.objective < (lowest ? lowest->objective : objective_)) lowest = std::move(candidate);
+    }
+    return lowest;
+  }
+
+  // Of candidates, the `keep` whose objective is lowest and below `below`,
+  // in the order given.
+  static std::vector<Candidate> best(std::vector<Candidate> candidates, double below, size_t keep) {
     std::vector<std::pair<double, size_t>> ranked;
-    for (size_t k = 0; k < screened.size(); ++k) {
-      if (screened[k].objective < below) ranked.emplace_back(screened[k].objective, k);
+    for (size_t k = 0; k < candidates.size(); ++k) {
+      if (candidates[k].objective < below) ranked.emplace_back(candidates[k].objective, k);
     }
     std::sort(ranked.begin(), ranked.end());
     ranked.resize(std::min(ranked.size(), keep));
     std::sort(ranked.begin(), ranked.end(), [](const auto& x, const auto& y) { return x.second < y.second; });
-    std::vector<std::vector<int>> best;
-    for (const auto& [objective, k] : ranked) best.push_back(sets[k]);
-    return best;
+    std::vector<Candidate> kept;
+    for (const auto& [objective, k] : ranked) kept.push_back(std::move(candidates[k]));
+    return kept;
+  }
+
+  // Of priced candidates, those that may be below the current objective:
+  // their estimate is less than kPlausible standard errors above it. So a
+  // candidate is scored exactly unless its sample makes it clearly worse,
+  // and how many are depends on how close they come, not on a count.
+  std::vector<Candidate> plausiblyBelowNow(std::vector<Candidate> candidates) const {
+    constexpr double kPlausible = 2.0;  // a one-sided 2.3% chance of missing a better candidate
+    std::erase_if(candidates, [&](const Candidate& candidate) {
+      return !(candidate.objective - kPlausible * candidate.standardError < objective_);
+    });
+    return candidates;
+  }
+
+  // The candidates with their exact objectives (those priced on a subset
+  // scored again over every sample), in the same order.
+  std::vector<Candidate> exactly(std::vector<Candidate> candidates) {
+    std::vector<std::vector<int>> inexact;
+    for (const Candidate& candidate : candidates) {
+      if (!candidate.exact) inexact.push_back(candidate.references);
+    }
+    std::vector<Candidate> scored = evaluate(inexact);
+    for (size_t k = 0, next = 0; k < candidates.size(); ++k) {
+      if (!candidates[k].exact) candidates[k] = std::move(scored[next++]);
+    }
+    return candidates;
   }
 
   // Triangulates and scores reference sets, the errors they need in one
   // parallel batch; results in the order given.
   std::vector<Candidate> evaluate(const std::vector<std::vector<int>>& sets, Scope scope = Scope::AllSamples) {
     std::vector<Candidate> candidates(sets.size());
-    std::vector<std::vector<SampleReconstruction>> assignments(sets.size());
+    std::vector<std::vector<SampleReconstruction>> requests(sets.size());
+    std::vector<ObjectiveEvaluator::PricedChange> changes(scope == Scope::Priced ? sets.size() : 0);
     tbb::parallel_for(size_t(0), sets.size(), [&](size_t k) {
       Candidate& candidate = candidates[k];
       candidate.references = sets[k];
@@ -331,11 +526,26 @@ private:
         if (!std::binary_search(references_.begin(), references_.end(), r)) candidate.placement = r;
       }
       candidate.mesh = evaluator_.triangulate(sets[k]);
-      if (candidate.mesh) assignments[k] = evaluator_.assignments(*candidate.mesh, scope == Scope::Screened);
+      if (!candidate.mesh) return;
+      if (scope != Scope::Priced) {
+        requests[k] = evaluator_.assignments(*candidate.mesh, scope == Scope::Screened);
+        candidate.exact = scope == Scope::AllSamples;
+        return;
+      }
+      changes[k] = evaluator_.pricedChange(*candidate.mesh, size_t(options_.pricedSamples));
+      candidate.exact = changes[k].exact;
+      requests[k] = candidate.exact ? std::move(changes[k].assignment) : changes[k].priced;
     });
-    evaluator_.compute(assignments);
+    evaluator_.compute(requests);
     for (size_t k = 0; k < sets.size(); ++k) {
-      if (candidates[k].mesh) candidates[k].objective = evaluator_.mean(assignments[k]);
+      if (!candidates[k].mesh) continue;
+      if (scope == Scope::Priced && !candidates[k].exact) {
+        const ObjectiveEvaluator::Estimate estimate = evaluator_.estimate(changes[k]);
+        candidates[k].objective = estimate.objective;
+        candidates[k].standardError = estimate.standardError;
+      } else {
+        candidates[k].objective = evaluator_.mean(requests[k]);
+      }
     }
     return candidates;
   }
@@ -346,6 +556,9 @@ private:
   // the decimated mesh with.
   std::optional<std::pair<int, int>> bestExchange() {
     constexpr size_t kRemovals = 8, kInsertions = 16, kPairs = 16;
+    // Not priced: an exchange is rare and decisive (it moves a reference
+    // across walls and rooms), and priced singles missed exchanges the exact
+    // ranking finds (docs/RESULTS.md, "Priced refinement").
     const Scope scope = screening() ? Scope::Screened : Scope::AllSamples;
     const std::vector<Candidate> base = evaluate({references_}, scope);
     if (!base[0].mesh) return std::nullopt;
@@ -376,15 +589,10 @@ private:
     pairs.resize(std::min(pairs.size(), kPairs));
     std::vector<std::vector<int>> tries;
     for (const auto& [estimate, v, c] : pairs) tries.push_back(replaced(v, c));
-    if (screening()) tries = screenedBest(tries, base[0].objective, kExchangesScored);
-    const std::vector<Candidate> exchanged = evaluate(tries);
-    size_t best = exchanged.size();
-    for (size_t k = 0; k < exchanged.size(); ++k) {
-      if (exchanged[k].objective < (best < exchanged.size() ? exchanged[best].objective : objective_)) best = k;
-    }
-    if (best == exchanged.size()) return std::nullopt;
-    const auto [removed, added] = exchangedPair(exchanged[best]);
-    accept(removed, exchanged[best]);
+    const std::optional<Candidate> exchanged = bestBelowNow(tries, Moves::Exchanges);
+    if (!exchanged) return std::nullopt;
+    const auto [removed, added] = exchangedPair(*exchanged);
+    accept(removed, *exchanged);
     return std::make_pair(removed, added);
   }
 
@@ -415,6 +623,7 @@ private:
     mesh_ = *candidate.mesh;
     objective_ = candidate.objective;
     screenedObjective_.reset();
+    evaluator_.setCurrent(mesh_);
   }
 
   std::span<const glm::dvec2> positions_;

@@ -39,6 +39,12 @@
 //   screening (screenedShare > 0): each batch of candidates above is first
 //   scored over a fixed random share of the dense samples, and only the best
 //   few that beat the current selection there are scored over all of them
+//   pricing (pricedSamples > 0, the default; not with screening): each
+//   candidate's change of the objective is first estimated, with its
+//   standard error, from about pricedSamples of the samples whose triangle
+//   it changes, and those that may beat the current selection (within two
+//   standard errors) are scored over all of them (a candidate that changes
+//   no more than that many is exact at once)
 //
 // Every move is logged like a collapse (kind "relocation", removed and
 // added triangles; the first against the given mesh), so the collapse log
@@ -78,6 +84,14 @@ struct RefinementOptions {
   // 0: every candidate over all of them. A move is made only if its exact
   // objective is lower, so screening can miss a move, never make a worse one.
   double screenedShare = 0.0;
+  // Pricing (when not screening): a candidate is first priced against the
+  // current selection on about this many of the samples whose triangle it
+  // changes (a stratified random subset, as the decimator prices a
+  // collapse, core/selection/sample_pricing.h), and scored over all of
+  // them unless that estimate is two standard errors above the current
+  // objective; one that changes no more is scored exactly at once. 0:
+  // every candidate over all of them.
+  int pricedSamples = 32;
 };
 
 struct RefinementResult {

@@ -78,7 +78,7 @@ void addSelectionOptions(CLI::App& command, SelectionArguments& arguments) {
       ->check(CLI::Range(0.0, 1.0));
   command
       .add_option("--refine-priced", arguments.refinePriced,
-                  "Without --refine-screen: price each candidate move of the refinement on about this many of the "
+                  "Without --refine-screen: price each local move of the refinement on about this many of the "
                   "samples whose triangle it changes (a fixed random subset of each new triangle's, against their "
                   "errors now), and score on all of them only those within two standard errors of the selection; "
                   "0: every candidate on all of them")

@@ -40,7 +40,7 @@
 //   scored over a fixed random share of the dense samples, and only the best
 //   few that beat the current selection there are scored over all of them
 //   pricing (pricedSamples > 0, the default; not with screening): each
-//   candidate's change of the objective is first estimated, with its
+//   local move's change of the objective is first estimated, with its
 //   standard error, from about pricedSamples of the samples whose triangle
 //   it changes, and those that may beat the current selection (within two
 //   standard errors) are scored over all of them (a candidate that changes
@@ -84,7 +84,7 @@ struct RefinementOptions {
   // 0: every candidate over all of them. A move is made only if its exact
   // objective is lower, so screening can miss a move, never make a worse one.
   double screenedShare = 0.0;
-  // Pricing (when not screening): a candidate is first priced against the
+  // Pricing (when not screening): a local move is first priced against the
   // current selection on about this many of the samples whose triangle it
   // changes (a stratified random subset, as the decimator prices a
   // collapse, core/selection/sample_pricing.h), and scored over all of

@@ -557,8 +557,8 @@ private:
   std::optional<std::pair<int, int>> bestExchange() {
     constexpr size_t kRemovals = 8, kInsertions = 16, kPairs = 16;
     // Not priced: an exchange is rare and decisive (it moves a reference
-    // across walls and rooms), and priced singles missed exchanges the exact
-    // ranking finds (docs/RESULTS.md, "Priced refinement").
+    // across walls and rooms), so it keeps the exact ranking (docs/DESIGN.md,
+    // "Refinement").
     const Scope scope = screening() ? Scope::Screened : Scope::AllSamples;
     const std::vector<Candidate> base = evaluate({references_}, scope);
     if (!base[0].mesh) return std::nullopt;

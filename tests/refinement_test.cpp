@@ -419,6 +419,30 @@ ViewMesh crowdedLeftRoom(const TwoRooms& rooms) {
   return ViewMesh::delaunay(rooms.positions, references, "two rooms", &rooms.region);
 }
 
+// The two rooms refined from crowdedLeftRoom, screened or priced (0: not),
+// and how many errors that computed.
+std::pair<RefinementResult, int> refineCrowdedRooms(const TwoRooms& rooms, double screenedShare, int priced) {
+  FormulaErrors errors(rooms.formula);
+  RefinementOptions options;
+  options.region = &rooms.region;
+  options.screenedShare = screenedShare;
+  options.pricedSamples = priced;
+  const RefinementResult result = refineSelection(rooms.positions, crowdedLeftRoom(rooms).triangles(), errors, options);
+  return {result, errors.computed};
+}
+
+// Every move lowered the exact objective, and the objective reported is
+// the exact one of the final mesh.
+void checkExactObjectiveFalls(const TwoRooms& rooms, const RefinementResult& result) {
+  double previous = result.objectiveBefore;
+  for (const Collapse& move : result.moves) {
+    CHECK(move.cost < previous);
+    previous = move.cost;
+  }
+  const ViewMesh final(rooms.positions, result.triangles, sharedRegion(&rooms.region));
+  CHECK(result.objectiveAfter == doctest::Approx(meanError(final, rooms.formula)).epsilon(1e-12));
+}
+
 }  // namespace
 
 TEST_CASE(
@@ -485,29 +509,12 @@ TEST_CASE("a lazily re-costed decimator makes each collapse at the cost a fresh 
 
 TEST_CASE("screened refinement: fewer errors, only moves that lower the exact objective") {
   const TwoRooms rooms;
-  const ViewMesh start = crowdedLeftRoom(rooms);
-  auto refine = [&](double share) {
-    FormulaErrors errors(rooms.formula);
-    RefinementOptions options;
-    options.region = &rooms.region;
-    options.screenedShare = share;
-    options.pricedSamples = 0;  // exact, without screening
-    const RefinementResult result = refineSelection(rooms.positions, start.triangles(), errors, options);
-    return std::pair(result, errors.computed);
-  };
-  const auto [exact, exactErrors] = refine(0.0);
-  const auto [screened, screenedErrors] = refine(0.25);
+  const auto [exact, exactErrors] = refineCrowdedRooms(rooms, 0.0, 0);
+  const auto [screened, screenedErrors] = refineCrowdedRooms(rooms, 0.25, 0);
   REQUIRE(screened.moves.size() >= 3);
   CHECK(screened.exchanges >= 1);
   CHECK(screenedErrors < exactErrors * 3 / 4);
-  // Every move lowered the exact objective, which is what is reported.
-  double previous = screened.objectiveBefore;
-  for (const Collapse& move : screened.moves) {
-    CHECK(move.cost < previous);
-    previous = move.cost;
-  }
-  const ViewMesh final(rooms.positions, screened.triangles, sharedRegion(&rooms.region));
-  CHECK(screened.objectiveAfter == doctest::Approx(meanError(final, rooms.formula)).epsilon(1e-12));
+  checkExactObjectiveFalls(rooms, screened);
   CHECK(screened.objectiveAfter < 0.8 * screened.objectiveBefore);
   CHECK(screened.objectiveAfter < 1.1 * exact.objectiveAfter);
   MESSAGE("refinement: exact ", exact.objectiveAfter, " with ", exactErrors, " errors; screened ",
@@ -516,19 +523,10 @@ TEST_CASE("screened refinement: fewer errors, only moves that lower the exact ob
 
 TEST_CASE("priced refinement: fewer errors, only moves that lower the exact objective, exact when the subset is all") {
   const TwoRooms rooms;
-  const ViewMesh start = crowdedLeftRoom(rooms);
-  auto refine = [&](int priced) {
-    FormulaErrors errors(rooms.formula);
-    RefinementOptions options;
-    options.region = &rooms.region;
-    options.pricedSamples = priced;
-    const RefinementResult result = refineSelection(rooms.positions, start.triangles(), errors, options);
-    return std::pair(result, errors.computed);
-  };
-  const auto [exact, exactErrors] = refine(0);
+  const auto [exact, exactErrors] = refineCrowdedRooms(rooms, 0.0, 0);
   // A subset larger than any candidate changes: every candidate is exact,
   // and so is every move.
-  const auto [all, allErrors] = refine(100000);
+  const auto [all, allErrors] = refineCrowdedRooms(rooms, 0.0, 100000);
   REQUIRE(all.moves.size() == exact.moves.size());
   for (size_t i = 0; i < exact.moves.size(); ++i) {
     CHECK(all.moves[i].first == exact.moves[i].first);
@@ -539,17 +537,11 @@ TEST_CASE("priced refinement: fewer errors, only moves that lower the exact obje
   // 8 samples per candidate: most candidates change dozens; those whose
   // estimate comes within two standard errors of the selection are scored
   // exactly.
-  const auto [priced, pricedErrors] = refine(8);
+  const auto [priced, pricedErrors] = refineCrowdedRooms(rooms, 0.0, 8);
   REQUIRE(priced.moves.size() >= 3);
   CHECK(priced.exchanges >= 1);
   CHECK(pricedErrors < exactErrors * 3 / 4);
-  double previous = priced.objectiveBefore;
-  for (const Collapse& move : priced.moves) {
-    CHECK(move.cost < previous);
-    previous = move.cost;
-  }
-  const ViewMesh final(rooms.positions, priced.triangles, sharedRegion(&rooms.region));
-  CHECK(priced.objectiveAfter == doctest::Approx(meanError(final, rooms.formula)).epsilon(1e-12));
+  checkExactObjectiveFalls(rooms, priced);
   CHECK(priced.objectiveAfter < 1.02 * exact.objectiveAfter);
   MESSAGE("refinement: exact ", exact.objectiveAfter, " with ", exactErrors, " errors; priced on 8 ",
           priced.objectiveAfter, " with ", pricedErrors);

@@ -357,8 +357,7 @@ void EdgeCollapseDecimator::choosePricedSamples(int a, int b, Plan& plan) const 
        stratifiedPricing(others, strata, size_t(options_.pricedSamples), [this](int s) { return weightOf(s); })) {
     chosen.push_back({indices[size_t(other.index)], other.scale});
   }
-  std::sort(chosen.begin(), chosen.end(),
-            [](const PricedSample& x, const PricedSample& y) { return x.index < y.index; });
+  std::sort(chosen.begin(), chosen.end());
   plan.priced.clear();
   plan.pricedScale.clear();
   for (const PricedSample& sample : chosen) {

@@ -42,8 +42,7 @@ std::vector<PricedSample> stratifiedPricing(std::span<const int> samples, std::s
     }
     begin = end;
   }
-  std::sort(chosen.begin(), chosen.end(),
-            [](const PricedSample& x, const PricedSample& y) { return x.index < y.index; });
+  std::sort(chosen.begin(), chosen.end());
   return chosen;
 }
 

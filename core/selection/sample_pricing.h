@@ -6,6 +6,7 @@
 // move of a reference among few serves hundreds. A stratified random
 // subset estimates that change at a bounded number of errors.
 
+#include <compare>
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -22,6 +23,7 @@ uint64_t samplePricingRank(int sample);
 struct PricedSample {
   int index = 0;       // into the samples given
   double scale = 1.0;  // the weight it stands for over its own weight
+  auto operator<=>(const PricedSample&) const = default;  // by index first
 };
 
 // Of samples[i], each in stratum strata[i] (the triangle that serves it

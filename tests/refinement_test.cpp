@@ -547,6 +547,57 @@ TEST_CASE("priced refinement: fewer errors, only moves that lower the exact obje
           priced.objectiveAfter, " with ", pricedErrors);
 }
 
+TEST_CASE("the exchange search prices its single removals and insertions: the exact search's exchanges, fewer errors") {
+  // Local moves reach no sample (1 cm), so every move is an exchange and
+  // every error computed after the start is the exchange search's.
+  const TwoRooms rooms;
+  auto exchangeOnly = [&](int priced) {
+    FormulaErrors errors(rooms.formula);
+    RefinementOptions options;
+    options.radius = 0.01;
+    options.region = &rooms.region;
+    options.pricedSamples = priced;
+    const RefinementResult result =
+        refineSelection(rooms.positions, crowdedLeftRoom(rooms).triangles(), errors, options);
+    return std::pair(result, errors.computed);
+  };
+  const auto [exact, exactErrors] = exchangeOnly(0);
+  const auto [priced, pricedErrors] = exchangeOnly(8);
+  REQUIRE(exact.exchanges >= 2);
+  REQUIRE(priced.moves.size() == exact.moves.size());
+  for (size_t i = 0; i < exact.moves.size(); ++i) {
+    CHECK(priced.moves[i].first == exact.moves[i].first);
+    CHECK(priced.moves[i].placement == exact.moves[i].placement);
+    CHECK(priced.moves[i].cost == exact.moves[i].cost);
+  }
+  CHECK(priced.objectiveAfter == exact.objectiveAfter);
+  CHECK(pricedErrors < exactErrors * 9 / 10);
+  checkExactObjectiveFalls(rooms, priced);
+  MESSAGE("exchange search: ", exact.exchanges, " exchanges; exact ", exactErrors, " errors, priced on 8 ",
+          pricedErrors);
+}
+
+TEST_CASE("Ctrl-C stops the exchange search between chunks of its errors, not after the whole search") {
+  const TwoRooms rooms;
+  constexpr int kStopAfter = 2000;  // errors: past the start (about 500), inside the first exchange search
+  int seen = 0;
+  FormulaErrors stopping([&](const Triangle& t, int destination) {
+    if (++seen == kStopAfter) requestInterrupt();
+    return rooms.formula(t, destination);
+  });
+  RefinementOptions options;
+  options.radius = 0.01;  // no local moves: only exchange searches
+  options.region = &rooms.region;
+  options.pricedSamples = 0;
+  ProgressReporter progress("refine", 0, true);
+  CHECK_THROWS_AS(refineSelection(rooms.positions, crowdedLeftRoom(rooms).triangles(), stopping, options, &progress),
+                  Interrupted);
+  clearInterrupt();
+  // At most the rest of the chunk (64 errors) after the stop was asked.
+  CHECK(stopping.computed >= kStopAfter);
+  CHECK(stopping.computed < kStopAfter + 64);
+}
+
 TEST_CASE(
     "a captured data set: decimation then refinement, the same with 1 and 2 threads (grid and simplified source "
     "meshes), and through selection.json") {

@@ -172,8 +172,9 @@ public:
   }
 
   // Computes, in one parallel batch, every error the given assignments
-  // need that is not cached yet.
-  void compute(const std::vector<std::vector<SampleReconstruction>>& batches) {
+  // need that is not cached yet; with progress, in chunks that advance it
+  // and stop on Ctrl-C between them.
+  void compute(const std::vector<std::vector<SampleReconstruction>>& batches, ProgressReporter* progress = nullptr) {
     std::set<SampleReconstruction> missing;
     for (const auto& batch : batches) {
       for (const SampleReconstruction& request : batch) {
@@ -186,8 +187,11 @@ public:
     }
     if (missing.empty()) return;
     const std::vector<SampleReconstruction> requests(missing.begin(), missing.end());
-    std::vector<double> values(requests.size());
-    errors_.computeReconstructionErrors(requests, values);
+    const std::vector<double> values =
+        computeInChunks(std::span<const SampleReconstruction>(requests), progress,
+                        [this](std::span<const SampleReconstruction> chunk, std::span<double> computed) {
+                          errors_.computeReconstructionErrors(chunk, computed);
+                        });
     for (size_t i = 0; i < requests.size(); ++i) known_.emplace(requests[i], values[i]);
     result_.errorsComputed += requests.size();
   }
@@ -351,7 +355,7 @@ public:
     while (result_.exchanges < maxExchanges) {
       throwIfInterrupted();
       const ViewMesh before = mesh_;
-      const std::optional<std::pair<int, int>> exchanged = bestExchange();
+      const std::optional<std::pair<int, int>> exchanged = bestExchange(progress);
       if (!exchanged) break;
       ++result_.exchanges;
       const auto [removed, added] = *exchanged;
@@ -452,10 +456,12 @@ private:
 
   // Of reference sets, the one whose exact objective is lowest and below
   // the current one (ties: the earlier), or none. Screening ranks the sets
-  // first and scores only the best few exactly; pricing (local
-  // moves only) scores exactly those its estimate cannot rule out.
+  // first and scores only the best few exactly; pricing (local moves;
+  // an exchange search prices its singles, not its pairs) scores exactly
+  // those its estimate cannot rule out.
   enum class Moves { Local, Exchanges };
-  std::optional<Candidate> bestBelowNow(const std::vector<std::vector<int>>& sets, Moves moves) {
+  std::optional<Candidate> bestBelowNow(const std::vector<std::vector<int>>& sets, Moves moves,
+                                        ProgressReporter* progress = nullptr) {
     std::vector<Candidate> candidates;
     if (screening()) {
       candidates =
@@ -463,7 +469,7 @@ private:
     } else if (pricing() && moves == Moves::Local) {
       candidates = exactly(plausiblyBelowNow(evaluate(sets, Scope::Priced)));
     } else {
-      candidates = evaluate(sets);
+      candidates = evaluate(sets, Scope::AllSamples, progress);
     }
     std::optional<Candidate> lowest;
     for (Candidate& candidate : candidates) {
@@ -487,35 +493,82 @@ private:
     return kept;
   }
 
+  // How many standard errors a priced candidate's estimate may be off
+  // before it is ruled out: a one-sided 2.3% chance of missing a better one.
+  static constexpr double kPlausible = 2.0;
+
   // Of priced candidates, those that may be below the current objective:
   // their estimate is less than kPlausible standard errors above it. So a
   // candidate is scored exactly unless its sample makes it clearly worse,
   // and how many are depends on how close they come, not on a count.
   std::vector<Candidate> plausiblyBelowNow(std::vector<Candidate> candidates) const {
-    constexpr double kPlausible = 2.0;  // a one-sided 2.3% chance of missing a better candidate
     std::erase_if(candidates, [&](const Candidate& candidate) {
       return !(candidate.objective - kPlausible * candidate.standardError < objective_);
     });
     return candidates;
   }
 
-  // The candidates with their exact objectives (those priced on a subset
-  // scored again over every sample), in the same order.
-  std::vector<Candidate> exactly(std::vector<Candidate> candidates) {
-    std::vector<std::vector<int>> inexact;
+  // Of candidates, priced or exact, those that cannot be among the `keep`
+  // lowest lose their mesh (they are ranked no further): a candidate whose
+  // estimate is more than kPlausible standard errors above the keep-th
+  // lowest of (estimate + kPlausible standard errors). The `keep` lowest
+  // exact objectives are kept unless a sample puts one that far off.
+  static void ruleOutAllButLowest(std::vector<Candidate>& candidates, size_t keep) {
+    std::vector<double> upper;
     for (const Candidate& candidate : candidates) {
-      if (!candidate.exact) inexact.push_back(candidate.references);
+      if (candidate.mesh) upper.push_back(candidate.objective + kPlausible * candidate.standardError);
     }
-    std::vector<Candidate> scored = evaluate(inexact);
-    for (size_t k = 0, next = 0; k < candidates.size(); ++k) {
-      if (!candidates[k].exact) candidates[k] = std::move(scored[next++]);
+    if (keep == 0 || upper.size() <= keep) return;
+    std::nth_element(upper.begin(), upper.begin() + std::ptrdiff_t(keep - 1), upper.end());
+    const double bound = upper[keep - 1];
+    for (Candidate& candidate : candidates) {
+      if (candidate.mesh && candidate.objective - kPlausible * candidate.standardError > bound) candidate.mesh.reset();
     }
+  }
+
+  // The candidates with their exact objectives (those with a mesh priced
+  // on a subset scored again over every sample), in the same order.
+  std::vector<Candidate> exactly(std::vector<Candidate> candidates, ProgressReporter* progress = nullptr) {
+    std::vector<size_t> inexact;
+    for (size_t k = 0; k < candidates.size(); ++k) {
+      if (candidates[k].mesh && !candidates[k].exact) inexact.push_back(k);
+    }
+    scoreExactly(candidates, inexact, progress);
     return candidates;
+  }
+
+  // Scores the candidates at the given positions over every sample, in place.
+  void scoreExactly(std::vector<Candidate>& candidates, std::span<const size_t> at, ProgressReporter* progress) {
+    std::vector<std::vector<int>> sets;
+    for (size_t k : at) sets.push_back(candidates[k].references);
+    std::vector<Candidate> scored = evaluate(sets, Scope::AllSamples, progress);
+    for (size_t i = 0; i < at.size(); ++i) candidates[at[i]] = std::move(scored[i]);
+  }
+
+  // Of priced candidates, those that may be among the `keep` lowest scored
+  // exactly, the others ruled out (ruleOutAllButLowest), in two rounds:
+  // first the `keep` lowest estimates, whose exact objectives then tighten
+  // the bound the others are ruled out by.
+  void scoreLowestExactly(std::vector<Candidate>& candidates, size_t keep, ProgressReporter* progress) {
+    ruleOutAllButLowest(candidates, keep);
+    std::vector<std::pair<double, size_t>> inexact;
+    for (size_t k = 0; k < candidates.size(); ++k) {
+      if (candidates[k].mesh && !candidates[k].exact) inexact.emplace_back(candidates[k].objective, k);
+    }
+    std::sort(inexact.begin(), inexact.end());
+    inexact.resize(std::min(inexact.size(), keep));
+    std::vector<size_t> first;
+    for (const auto& [estimate, k] : inexact) first.push_back(k);
+    std::sort(first.begin(), first.end());
+    scoreExactly(candidates, first, progress);
+    ruleOutAllButLowest(candidates, keep);
+    candidates = exactly(std::move(candidates), progress);
   }
 
   // Triangulates and scores reference sets, the errors they need in one
   // parallel batch; results in the order given.
-  std::vector<Candidate> evaluate(const std::vector<std::vector<int>>& sets, Scope scope = Scope::AllSamples) {
+  std::vector<Candidate> evaluate(const std::vector<std::vector<int>>& sets, Scope scope = Scope::AllSamples,
+                                  ProgressReporter* progress = nullptr) {
     std::vector<Candidate> candidates(sets.size());
     std::vector<std::vector<SampleReconstruction>> requests(sets.size());
     std::vector<ObjectiveEvaluator::PricedChange> changes(scope == Scope::Priced ? sets.size() : 0);
@@ -536,7 +589,7 @@ private:
       candidate.exact = changes[k].exact;
       requests[k] = candidate.exact ? std::move(changes[k].assignment) : changes[k].priced;
     });
-    evaluator_.compute(requests);
+    evaluator_.compute(requests, progress);
     for (size_t k = 0; k < sets.size(); ++k) {
       if (!candidates[k].mesh) continue;
       if (scope == Scope::Priced && !candidates[k].exact) {
@@ -551,36 +604,31 @@ private:
   }
 
   // The best exchange, made if it lowers the objective; its (reference,
-  // sample), or nothing. Losses and gains are measured against the
-  // Delaunay mesh of the references, which the first exchange replaces
-  // the decimated mesh with.
-  std::optional<std::pair<int, int>> bestExchange() {
+  // sample), or nothing. Every single removal and insertion is scored, the
+  // pairs of the lowest of each are ranked by the sum of their changes, and
+  // the best pairs are scored exactly. Losses and gains are measured
+  // against the Delaunay mesh of the references, which the first exchange
+  // replaces the decimated mesh with.
+  std::optional<std::pair<int, int>> bestExchange(ProgressReporter* progress) {
     constexpr size_t kRemovals = 8, kInsertions = 16, kPairs = 16;
-    // Not priced: an exchange is rare and decisive (it moves a reference
-    // across walls and rooms), so it keeps the exact ranking (docs/DESIGN.md,
-    // "Refinement").
+    std::optional<ProgressReporter> searching;
+    if (progress) searching.emplace("refine: search exchanges, errors", 0, progress->quiet());
+    ProgressReporter* errorsProgress = searching ? &*searching : nullptr;
     const Scope scope = screening() ? Scope::Screened : Scope::AllSamples;
     const std::vector<Candidate> base = evaluate({references_}, scope);
     if (!base[0].mesh) return std::nullopt;
-    std::vector<std::vector<int>> sets;
-    for (int v : references_) sets.push_back(replaced(v, -1));
+    std::vector<std::vector<int>> removals, additions;
+    for (int v : references_) removals.push_back(replaced(v, -1));
     const std::vector<int> insertions = exchangeCandidates(positions_, references_);
-    for (int c : insertions) sets.push_back(replaced(-1, c));
-    const std::vector<Candidate> singles = evaluate(sets, scope);
-    std::vector<std::pair<double, int>> losses, gains;
-    for (size_t k = 0; k < singles.size(); ++k) {
-      if (!singles[k].mesh) continue;
-      const double change = singles[k].objective - base[0].objective;
-      if (k < references_.size()) {
-        losses.emplace_back(change, references_[k]);
-      } else {
-        gains.emplace_back(change, insertions[k - references_.size()]);
-      }
+    for (int c : insertions) additions.push_back(replaced(-1, c));
+    if (searching) {
+      searching->setStatus(std::to_string(removals.size()) + " removals, " + std::to_string(additions.size()) +
+                           " insertions");
     }
-    std::sort(losses.begin(), losses.end());
-    std::sort(gains.begin(), gains.end());
-    losses.resize(std::min(losses.size(), kRemovals));
-    gains.resize(std::min(gains.size(), kInsertions));
+    const std::vector<std::pair<double, int>> losses =
+        lowestChanges(removals, references_, base[0].objective, kRemovals, scope, errorsProgress);
+    const std::vector<std::pair<double, int>> gains =
+        lowestChanges(additions, insertions, base[0].objective, kInsertions, scope, errorsProgress);
     std::vector<std::tuple<double, int, int>> pairs;
     for (const auto& [loss, v] : losses) {
       for (const auto& [gain, c] : gains) pairs.emplace_back(loss + gain, v, c);
@@ -589,11 +637,38 @@ private:
     pairs.resize(std::min(pairs.size(), kPairs));
     std::vector<std::vector<int>> tries;
     for (const auto& [estimate, v, c] : pairs) tries.push_back(replaced(v, c));
-    const std::optional<Candidate> exchanged = bestBelowNow(tries, Moves::Exchanges);
+    const std::optional<Candidate> exchanged = bestBelowNow(tries, Moves::Exchanges, errorsProgress);
     if (!exchanged) return std::nullopt;
     const auto [removed, added] = exchangedPair(*exchanged);
     accept(removed, *exchanged);
     return std::make_pair(removed, added);
+  }
+
+  // Of single changes (one reference removed, or one sample added; label:
+  // which), the `keep` lowest changes of the objective against `base`,
+  // lowest first (ties: the lower label). Priced, unless screening: every
+  // single is estimated, and only those that may be among the `keep`
+  // lowest are scored exactly, so the exchange search ranks on exact
+  // changes like the unpriced one unless a sample puts a single two
+  // standard errors off. Most insertions change hundreds of samples at
+  // large captures and are clearly not among the lowest.
+  std::vector<std::pair<double, int>> lowestChanges(const std::vector<std::vector<int>>& singles,
+                                                    std::span<const int> labels, double base, size_t keep, Scope scope,
+                                                    ProgressReporter* progress) {
+    std::vector<Candidate> scored;
+    if (scope == Scope::AllSamples && pricing()) {
+      scored = evaluate(singles, Scope::Priced, progress);
+      scoreLowestExactly(scored, keep, progress);
+    } else {
+      scored = evaluate(singles, scope, progress);
+    }
+    std::vector<std::pair<double, int>> changes;
+    for (size_t k = 0; k < scored.size(); ++k) {
+      if (scored[k].mesh) changes.emplace_back(scored[k].objective - base, labels[k]);
+    }
+    std::sort(changes.begin(), changes.end());
+    changes.resize(std::min(changes.size(), keep));
+    return changes;
   }
 
   // The reference an exchange took out and the sample it put in.

@@ -89,8 +89,11 @@ struct RefinementOptions {
   // changes (a stratified random subset, as the decimator prices a
   // collapse, core/selection/sample_pricing.h), and scored over all of
   // them unless that estimate is two standard errors above the current
-  // objective; one that changes no more is scored exactly at once. 0:
-  // every candidate over all of them.
+  // objective; one that changes no more is scored exactly at once. The
+  // exchange search prices its single removals and insertions the same
+  // way and scores exactly those that may rank among the lowest; the
+  // exchanges it ranks from them are scored exactly. 0: every candidate
+  // over all of them.
   int pricedSamples = 32;
 };
 

@@ -42,6 +42,7 @@ public:
   void finish();
   double elapsedSeconds() const;
   size_t done() const { return done_; }
+  bool quiet() const { return quiet_; }
 
 private:
   void print(bool final);

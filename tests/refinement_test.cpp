@@ -443,6 +443,18 @@ void checkExactObjectiveFalls(const TwoRooms& rooms, const RefinementResult& res
   CHECK(result.objectiveAfter == doctest::Approx(meanError(final, rooms.formula)).epsilon(1e-12));
 }
 
+// The same moves (reference, placement, objective after each) and the
+// same final objective.
+void checkSameMoves(const RefinementResult& result, const RefinementResult& expected) {
+  REQUIRE(result.moves.size() == expected.moves.size());
+  for (size_t i = 0; i < expected.moves.size(); ++i) {
+    CHECK(result.moves[i].first == expected.moves[i].first);
+    CHECK(result.moves[i].placement == expected.moves[i].placement);
+    CHECK(result.moves[i].cost == expected.moves[i].cost);
+  }
+  CHECK(result.objectiveAfter == expected.objectiveAfter);
+}
+
 }  // namespace
 
 TEST_CASE(
@@ -527,13 +539,7 @@ TEST_CASE("priced refinement: fewer errors, only moves that lower the exact obje
   // A subset larger than any candidate changes: every candidate is exact,
   // and so is every move.
   const auto [all, allErrors] = refineCrowdedRooms(rooms, 0.0, 100000);
-  REQUIRE(all.moves.size() == exact.moves.size());
-  for (size_t i = 0; i < exact.moves.size(); ++i) {
-    CHECK(all.moves[i].first == exact.moves[i].first);
-    CHECK(all.moves[i].placement == exact.moves[i].placement);
-    CHECK(all.moves[i].cost == exact.moves[i].cost);
-  }
-  CHECK(all.objectiveAfter == exact.objectiveAfter);
+  checkSameMoves(all, exact);
   // 8 samples per candidate: most candidates change dozens; those whose
   // estimate comes within two standard errors of the selection are scored
   // exactly.
@@ -564,13 +570,7 @@ TEST_CASE("the exchange search prices its single removals and insertions: the ex
   const auto [exact, exactErrors] = exchangeOnly(0);
   const auto [priced, pricedErrors] = exchangeOnly(8);
   REQUIRE(exact.exchanges >= 2);
-  REQUIRE(priced.moves.size() == exact.moves.size());
-  for (size_t i = 0; i < exact.moves.size(); ++i) {
-    CHECK(priced.moves[i].first == exact.moves[i].first);
-    CHECK(priced.moves[i].placement == exact.moves[i].placement);
-    CHECK(priced.moves[i].cost == exact.moves[i].cost);
-  }
-  CHECK(priced.objectiveAfter == exact.objectiveAfter);
+  checkSameMoves(priced, exact);
   CHECK(pricedErrors < exactErrors * 9 / 10);
   checkExactObjectiveFalls(rooms, priced);
   MESSAGE("exchange search: ", exact.exchanges, " exchanges; exact ", exactErrors, " errors, priced on 8 ",

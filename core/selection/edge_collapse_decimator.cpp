@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numeric>
 #include <set>
 #include <unordered_set>
 
@@ -341,12 +340,12 @@ void EdgeCollapseDecimator::assignServedSamples(int a, int b, Plan& plan) const 
 void EdgeCollapseDecimator::choosePricedSamples(int a, int b, Plan& plan) const {
   // The vertices the collapse frees are always priced; the others by a
   // stratified subset, by the triangle that serves them after it.
-  std::vector<PricedSample> chosen;  // index into served
+  plan.priced.clear();
   std::vector<int> others, strata, indices;
   for (size_t i = 0; i < plan.served.size(); ++i) {
     const int sample = plan.served[i];
     if (sample == a || sample == b) {
-      chosen.push_back({int(i), 1.0});
+      plan.priced.push_back({int(i), 1.0});
     } else {
       others.push_back(sample);
       strata.push_back(plan.servedBy[i]);
@@ -355,21 +354,25 @@ void EdgeCollapseDecimator::choosePricedSamples(int a, int b, Plan& plan) const 
   }
   for (const PricedSample& other :
        stratifiedPricing(others, strata, size_t(options_.pricedSamples), [this](int s) { return weightOf(s); })) {
-    chosen.push_back({indices[size_t(other.index)], other.scale});
+    plan.priced.push_back({indices[size_t(other.index)], other.scale});
   }
-  std::sort(chosen.begin(), chosen.end());
-  plan.priced.clear();
-  plan.pricedScale.clear();
-  for (const PricedSample& sample : chosen) {
-    plan.priced.push_back(sample.index);
-    plan.pricedScale.push_back(sample.scale);
-  }
+  std::sort(plan.priced.begin(), plan.priced.end());
 }
 
-std::vector<SampleReconstruction> EdgeCollapseDecimator::servedRequests(const Plan& plan,
-                                                                        std::span<const int> indices) const {
+std::vector<SampleReconstruction> EdgeCollapseDecimator::pricedRequests(const Plan& plan) const {
   std::vector<SampleReconstruction> requests;
-  for (int i : indices) requests.push_back({sortedTriangle(servingTriangle(plan, size_t(i))), plan.served[size_t(i)]});
+  for (const PricedSample& priced : plan.priced) {
+    const size_t i = size_t(priced.index);
+    requests.push_back({sortedTriangle(servingTriangle(plan, i)), plan.served[i]});
+  }
+  return requests;
+}
+
+std::vector<SampleReconstruction> EdgeCollapseDecimator::servedRequests(const Plan& plan) const {
+  std::vector<SampleReconstruction> requests;
+  for (size_t i = 0; i < plan.served.size(); ++i) {
+    requests.push_back({sortedTriangle(servingTriangle(plan, i)), plan.served[i]});
+  }
   return requests;
 }
 
@@ -567,11 +570,11 @@ std::pair<double, double> EdgeCollapseDecimator::evaluate(const Plan& plan) {
     before += weight * homeError_[size_t(sample)];
     weightSum += weight;
   }
-  for (size_t k = 0; k < plan.priced.size(); ++k) {
-    const size_t i = size_t(plan.priced[k]);
+  for (const PricedSample& priced : plan.priced) {
+    const size_t i = size_t(priced.index);
     const int sample = plan.served[i];
     const double after = sampleError(servingTriangle(plan, i), sample);
-    change += plan.pricedScale[k] * weightOf(sample) * (after - homeError_[size_t(sample)]);
+    change += priced.scale * weightOf(sample) * (after - homeError_[size_t(sample)]);
   }
   return {change - placementBefore, weightSum > 0.0 ? (before + change) / weightSum : 0.0};
 }
@@ -596,7 +599,7 @@ void EdgeCollapseDecimator::costEdges(const std::vector<Edge>& edges, ProgressRe
       if (options_.cost == CollapseCost::Centroid) {
         needed.insert(needed.end(), plan.added.begin(), plan.added.end());
       } else {
-        const std::vector<SampleReconstruction> requests = servedRequests(plan, plan.priced);
+        const std::vector<SampleReconstruction> requests = pricedRequests(plan);
         neededSamples.insert(neededSamples.end(), requests.begin(), requests.end());
       }
       plans.push_back({i, std::move(plan)});
@@ -692,7 +695,7 @@ std::optional<Collapse> EdgeCollapseDecimator::evaluateCollapse(int first, int s
   if (options_.cost == CollapseCost::Centroid) {
     ensureErrors(plan.added);
   } else {
-    ensureSampleErrors(servedRequests(plan, plan.priced));
+    ensureSampleErrors(pricedRequests(plan));
   }
   const auto [cost, error] = evaluate(plan);
   if (options_.maxError > 0.0 && error > options_.maxError) return std::nullopt;
@@ -744,9 +747,7 @@ void EdgeCollapseDecimator::apply(const Edge& edge, const EdgeState& state) {
   std::set<int> gainedSamples;  // existing triangles that now serve samples outside the mesh
   if (options_.cost == CollapseCost::ServedSamples) {
     if (plan.priced.size() < plan.served.size()) {  // the samples left out of the price have errors from now on
-      std::vector<int> every(plan.served.size());
-      std::iota(every.begin(), every.end(), 0);
-      ensureSampleErrors(servedRequests(plan, every));
+      ensureSampleErrors(servedRequests(plan));
     }
     const int firstAdded = int(triangles_.size()) - int(plan.added.size());
     served_.resize(triangles_.size());

@@ -179,8 +179,9 @@ private:
     std::vector<int> served;          // served-sample cost: the samples whose triangle changes
     std::vector<int> servedBy;        // per served sample: index into added, or -1 - id of an existing triangle
     std::vector<ServingRank> servedRank;  // of that triangle for the sample ({false, 0} inside)
-    std::vector<int> priced;              // indices into served whose errors price the collapse (sorted)
-    std::vector<double> pricedScale;      // per priced sample: the served weight it stands for over its own
+    // Of served, those whose errors price the collapse (index into served, sorted), each
+    // with the served weight it stands for over its own.
+    std::vector<PricedSample> priced;
   };
   struct EdgeState {
     uint64_t stamp = 0;
@@ -228,8 +229,9 @@ private:
   std::vector<std::pair<int, PlacementKind>> candidates(int a, int b, EdgeState& state) const;
   void assignServedSamples(int a, int b, Plan& plan) const;
   void choosePricedSamples(int a, int b, Plan& plan) const;
-  // The reconstructions giving the errors of plan.served[i] for i in indices.
-  std::vector<SampleReconstruction> servedRequests(const Plan& plan, std::span<const int> indices) const;
+  // The reconstructions giving the errors of the plan's priced samples, or of all its served ones.
+  std::vector<SampleReconstruction> pricedRequests(const Plan& plan) const;
+  std::vector<SampleReconstruction> servedRequests(const Plan& plan) const;
   void costEdges(const std::vector<Edge>& edges, ProgressReporter* progress = nullptr);
   void ensureErrors(const std::vector<Triangle>& triangles, ProgressReporter* progress = nullptr);
   void ensureSampleErrors(const std::vector<SampleReconstruction>& requests, ProgressReporter* progress = nullptr);

@@ -421,12 +421,14 @@ ViewMesh crowdedLeftRoom(const TwoRooms& rooms) {
 
 // The two rooms refined from crowdedLeftRoom, screened or priced (0: not),
 // and how many errors that computed.
-std::pair<RefinementResult, int> refineCrowdedRooms(const TwoRooms& rooms, double screenedShare, int priced) {
+std::pair<RefinementResult, int> refineCrowdedRooms(const TwoRooms& rooms, double screenedShare, int priced,
+                                                    int repricing = RefinementOptions{}.repricing) {
   FormulaErrors errors(rooms.formula);
   RefinementOptions options;
   options.region = &rooms.region;
   options.screenedShare = screenedShare;
   options.pricedSamples = priced;
+  options.repricing = repricing;
   const RefinementResult result = refineSelection(rooms.positions, crowdedLeftRoom(rooms).triangles(), errors, options);
   return {result, errors.computed};
 }
@@ -557,24 +559,39 @@ TEST_CASE("the exchange search prices its single removals and insertions: the ex
   // Local moves reach no sample (1 cm), so every move is an exchange and
   // every error computed after the start is the exchange search's.
   const TwoRooms rooms;
-  auto exchangeOnly = [&](int priced) {
+  auto exchangeOnly = [&](int priced, int repricing) {
     FormulaErrors errors(rooms.formula);
     RefinementOptions options;
     options.radius = 0.01;
     options.region = &rooms.region;
     options.pricedSamples = priced;
+    options.repricing = repricing;
     const RefinementResult result =
         refineSelection(rooms.positions, crowdedLeftRoom(rooms).triangles(), errors, options);
     return std::pair(result, errors.computed);
   };
-  const auto [exact, exactErrors] = exchangeOnly(0);
-  const auto [priced, pricedErrors] = exchangeOnly(8);
+  const auto [exact, exactErrors] = exchangeOnly(0, 1);
+  const auto [priced, pricedErrors] = exchangeOnly(8, 1);
   REQUIRE(exact.exchanges >= 2);
   checkSameMoves(priced, exact);
   CHECK(pricedErrors < exactErrors * 9 / 10);
   checkExactObjectiveFalls(rooms, priced);
+  // The singles that may rank among the lowest priced again on 32 first.
+  const auto [repriced, repricedErrors] = exchangeOnly(8, 4);
+  checkSameMoves(repriced, exact);
+  CHECK(repricedErrors < pricedErrors);
   MESSAGE("exchange search: ", exact.exchanges, " exchanges; exact ", exactErrors, " errors, priced on 8 ",
-          pricedErrors);
+          pricedErrors, ", and again on 32 ", repricedErrors);
+}
+
+TEST_CASE(
+    "local moves that may beat the selection are priced again on more samples first: the same moves, fewer errors") {
+  const TwoRooms rooms;
+  const auto [once, onceErrors] = refineCrowdedRooms(rooms, 0.0, 8, 1);
+  const auto [again, againErrors] = refineCrowdedRooms(rooms, 0.0, 8, 4);
+  checkSameMoves(again, once);
+  CHECK(againErrors < onceErrors);
+  MESSAGE("priced on 8: ", onceErrors, " errors; again on 32 first: ", againErrors);
 }
 
 TEST_CASE("Ctrl-C stops the exchange search between chunks of its errors, not after the whole search") {

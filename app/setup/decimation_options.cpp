@@ -80,9 +80,10 @@ void addSelectionOptions(CLI::App& command, SelectionArguments& arguments) {
       .add_option("--refine-priced", arguments.refinePriced,
                   "Without --refine-screen: price each local move of the refinement on about this many of the "
                   "samples whose triangle it changes (a fixed random subset of each new triangle's, against their "
-                  "errors now), and score on all of them only those within two standard errors of the selection "
-                  "(the exchange search: its single removals and insertions, scoring on all of them those that may "
-                  "rank among the lowest); 0: every candidate on all of them")
+                  "errors now), price again on 4 times as many those within two standard errors of the selection, "
+                  "and score on all of them only those still within (the exchange search: its single removals and "
+                  "insertions, the same way for those that may rank among the lowest); 0: every candidate on all "
+                  "of them")
       ->capture_default_str()
       ->check(nonNegativeNumber());
 }

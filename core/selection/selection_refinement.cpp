@@ -467,7 +467,7 @@ private:
       candidates =
           evaluate(screenedBest(sets, screenedObjective(), moves == Moves::Local ? kMovesScored : kExchangesScored));
     } else if (pricing() && moves == Moves::Local) {
-      candidates = exactly(plausiblyBelowNow(evaluate(sets, Scope::Priced)));
+      candidates = exactly(plausiblyBelowNow(repriced(plausiblyBelowNow(evaluate(sets, Scope::Priced)))));
     } else {
       candidates = evaluate(sets, Scope::AllSamples, progress);
     }
@@ -537,6 +537,27 @@ private:
     return candidates;
   }
 
+  // The priced candidates priced again on options_.repricing times as many
+  // of the samples they change, in the same order. The subsets are the
+  // samples of lowest fixed rank in each new triangle, so the first subset
+  // is part of the second and its errors count again: a candidate that the
+  // closer look rules out costs that many times its first price, not
+  // every sample it changes.
+  std::vector<Candidate> repriced(std::vector<Candidate> candidates, ProgressReporter* progress = nullptr) {
+    if (options_.repricing <= 1) return candidates;
+    std::vector<size_t> inexact;
+    std::vector<std::vector<int>> sets;
+    for (size_t k = 0; k < candidates.size(); ++k) {
+      if (candidates[k].mesh && !candidates[k].exact) {
+        inexact.push_back(k);
+        sets.push_back(candidates[k].references);
+      }
+    }
+    std::vector<Candidate> again = evaluate(sets, Scope::Priced, progress, options_.repricing * options_.pricedSamples);
+    for (size_t i = 0; i < inexact.size(); ++i) candidates[inexact[i]] = std::move(again[i]);
+    return candidates;
+  }
+
   // Scores the candidates at the given positions over every sample, in place.
   void scoreExactly(std::vector<Candidate>& candidates, std::span<const size_t> at, ProgressReporter* progress) {
     std::vector<std::vector<int>> sets;
@@ -562,13 +583,16 @@ private:
     std::sort(first.begin(), first.end());
     scoreExactly(candidates, first, progress);
     ruleOutAllButLowest(candidates, keep);
+    candidates = repriced(std::move(candidates), progress);
+    ruleOutAllButLowest(candidates, keep);
     candidates = exactly(std::move(candidates), progress);
   }
 
   // Triangulates and scores reference sets, the errors they need in one
   // parallel batch; results in the order given.
   std::vector<Candidate> evaluate(const std::vector<std::vector<int>>& sets, Scope scope = Scope::AllSamples,
-                                  ProgressReporter* progress = nullptr) {
+                                  ProgressReporter* progress = nullptr, int pricedSamples = 0) {
+    const size_t pricedLimit = size_t(pricedSamples > 0 ? pricedSamples : options_.pricedSamples);
     std::vector<Candidate> candidates(sets.size());
     std::vector<std::vector<SampleReconstruction>> requests(sets.size());
     std::vector<ObjectiveEvaluator::PricedChange> changes(scope == Scope::Priced ? sets.size() : 0);
@@ -585,7 +609,7 @@ private:
         candidate.exact = scope == Scope::AllSamples;
         return;
       }
-      changes[k] = evaluator_.pricedChange(*candidate.mesh, size_t(options_.pricedSamples));
+      changes[k] = evaluator_.pricedChange(*candidate.mesh, pricedLimit);
       candidate.exact = changes[k].exact;
       requests[k] = candidate.exact ? std::move(changes[k].assignment) : changes[k].priced;
     });

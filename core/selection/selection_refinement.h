@@ -43,8 +43,9 @@
 //   local move's change of the objective is first estimated, with its
 //   standard error, from about pricedSamples of the samples whose triangle
 //   it changes, and those that may beat the current selection (within two
-//   standard errors) are scored over all of them (a candidate that changes
-//   no more than that many is exact at once)
+//   standard errors) are priced again on `repricing` times as many, and
+//   those that still may are scored over all of them (a candidate that
+//   changes no more than a price takes is exact at once)
 //
 // Every move is logged like a collapse (kind "relocation", removed and
 // added triangles; the first against the given mesh), so the collapse log
@@ -95,6 +96,11 @@ struct RefinementOptions {
   // exchanges it ranks from them are scored exactly. 0: every candidate
   // over all of them.
   int pricedSamples = 32;
+  // Before a priced candidate that may beat the selection (or, in the
+  // exchange search, rank among the lowest) is scored over every sample it
+  // changes, it is priced again on this many times as many and ruled out
+  // by the same two-standard-error test; 1: scored over all of them at once.
+  int repricing = 4;
 };
 
 struct RefinementResult {

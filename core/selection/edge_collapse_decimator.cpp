@@ -359,20 +359,19 @@ void EdgeCollapseDecimator::choosePricedSamples(int a, int b, Plan& plan) const 
   std::sort(plan.priced.begin(), plan.priced.end());
 }
 
+SampleReconstruction EdgeCollapseDecimator::servedRequest(const Plan& plan, size_t i) const {
+  return {sortedTriangle(servingTriangle(plan, i)), plan.served[i]};
+}
+
 std::vector<SampleReconstruction> EdgeCollapseDecimator::pricedRequests(const Plan& plan) const {
   std::vector<SampleReconstruction> requests;
-  for (const PricedSample& priced : plan.priced) {
-    const size_t i = size_t(priced.index);
-    requests.push_back({sortedTriangle(servingTriangle(plan, i)), plan.served[i]});
-  }
+  for (const PricedSample& priced : plan.priced) requests.push_back(servedRequest(plan, size_t(priced.index)));
   return requests;
 }
 
 std::vector<SampleReconstruction> EdgeCollapseDecimator::servedRequests(const Plan& plan) const {
   std::vector<SampleReconstruction> requests;
-  for (size_t i = 0; i < plan.served.size(); ++i) {
-    requests.push_back({sortedTriangle(servingTriangle(plan, i)), plan.served[i]});
-  }
+  for (size_t i = 0; i < plan.served.size(); ++i) requests.push_back(servedRequest(plan, i));
   return requests;
 }
 

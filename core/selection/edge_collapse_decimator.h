@@ -229,7 +229,9 @@ private:
   std::vector<std::pair<int, PlacementKind>> candidates(int a, int b, EdgeState& state) const;
   void assignServedSamples(int a, int b, Plan& plan) const;
   void choosePricedSamples(int a, int b, Plan& plan) const;
-  // The reconstructions giving the errors of the plan's priced samples, or of all its served ones.
+  // The reconstruction giving the error of plan.served[i]; those of the
+  // plan's priced samples, or of all its served ones.
+  SampleReconstruction servedRequest(const Plan& plan, size_t i) const;
   std::vector<SampleReconstruction> pricedRequests(const Plan& plan) const;
   std::vector<SampleReconstruction> servedRequests(const Plan& plan) const;
   void costEdges(const std::vector<Edge>& edges, ProgressReporter* progress = nullptr);

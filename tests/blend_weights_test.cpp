@@ -53,7 +53,7 @@ TEST_CASE("the warp's reliability of a wall seen face-on from half the distance 
 
 TEST_CASE("blend: within the interval each layer weighs its inverse distance times its reliability") {
   auto layer = [](glm::vec3 color, float reliability) {
-    return WarpLayer{ColorImage(1, 1, color), ScalarImage(1, 1, 2.0f), {1}, 0, {}, {reliability}};
+    return WarpLayer{ColorImage(1, 1, color), ScalarImage(1, 1, 2.0f), {1}, 0, 0, {}, {reliability}};
   };
   const std::vector<WarpLayer> layers = {layer({1, 0, 0}, 1.0f), layer({0, 1, 0}, 0.25f)};
   const std::vector<const WarpLayer*> pointers = {&layers[0], &layers[1]};

@@ -249,10 +249,43 @@ TEST_CASE("warp results are identical for any thread count") {
   CHECK(one.covered == all.covered);
 }
 
+TEST_CASE("row spans warp to the same layer as testing every pixel of each range, testing a fraction of them") {
+  // The room's walls, floor and ceiling simplify to triangles tens of
+  // columns wide, some around a pole or across the seam; a yawed
+  // destination moves the seam through them.
+  const AnalyticScene scene = roomWithPillar();
+  const glm::vec3 s1(-1.0f, 0.0f, 1.5f);
+  const Panorama panorama = renderPanorama(scene, s1, kWidth);
+  for (const SourceMesh mesh : {SourceMesh::Simplified, SourceMesh::Grid}) {
+    WarpOptions options;
+    options.mesh = mesh;
+    const WarpSource source(panorama, s1, 0.0f, options);
+    for (const float yaw : {0.0f, 1.3f, -2.9f}) {
+      for (const glm::vec3 destination : {glm::vec3(1.0f, 0.3f, 1.4f), glm::vec3(-3.5f, 3.2f, 2.6f)}) {
+        const DestinationCamera camera = DestinationCamera::panorama(destination, kWidth, kWidth / 2, yaw);
+        const WarpLayer spans = warpToCamera(source, camera, WarpMethod::Mesh, LayerReliability::Computed);
+        const WarpLayer scanned =
+            warpToCamera(source, camera, WarpMethod::Mesh, LayerReliability::Computed, PanoramaRaster::BoundingBox);
+        INFO(sourceMeshName(mesh) << " yaw " << yaw << " destination " << destination.x << ", " << destination.y);
+        CHECK(spans.covered == scanned.covered);
+        CHECK(spans.distance.pixels == scanned.distance.pixels);
+        CHECK(spans.color.pixels == scanned.color.pixels);
+        CHECK(spans.reliability == scanned.reliability);
+        INFO("pixel centres tested: " << spans.pixelsTested << " with spans, " << scanned.pixelsTested << " without");
+        if (mesh == SourceMesh::Simplified) {
+          CHECK(3 * spans.pixelsTested < 2 * scanned.pixelsTested);
+        } else {
+          CHECK(spans.pixelsTested <= scanned.pixelsTested);
+        }
+      }
+    }
+  }
+}
+
 TEST_CASE("blend: nearest layer wins, layers within epsilon average with inverse-distance weights") {
   // Three one-pixel layers: A at 2.0 m, B at 2.05 m (within 5% of A), C at 3 m (behind).
   auto layer = [](glm::vec3 color, float distance) {
-    WarpLayer l{ColorImage(1, 1, color), ScalarImage(1, 1, distance), {1}, 0, {}, {}};
+    WarpLayer l{ColorImage(1, 1, color), ScalarImage(1, 1, distance), {1}, 0, 0, {}, {}};
     return l;
   };
   const std::vector<WarpLayer> layers = {layer({1, 0, 0}, 2.0f), layer({0, 1, 0}, 2.05f), layer({0, 0, 1}, 3.0f)};

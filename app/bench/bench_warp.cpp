@@ -19,18 +19,24 @@ struct WarpRun {
   double seconds = 0.0;
   WarpTimings timings;
   uint64_t triangles = 0;
+  double testedPerPixel = 0.0;  // pixel centres tested against a triangle, per destination pixel
 };
 
-WarpRun timeWarps(const WarpSource& source, const DestinationCamera& destination, int repetitions) {
+WarpRun timeWarps(const WarpSource& source, const DestinationCamera& destination, int repetitions,
+                  PanoramaRaster raster = PanoramaRaster::RowSpans) {
   WarpRun run;
-  warpToCamera(source, destination, WarpMethod::Mesh);  // warm-up
+  const auto warp = [&] {
+    return warpToCamera(source, destination, WarpMethod::Mesh, LayerReliability::Computed, raster);
+  };
+  warp();  // warm-up
   const auto start = BenchClock::now();
   for (int i = 0; i < repetitions; ++i) {
-    const WarpLayer layer = warpToCamera(source, destination, WarpMethod::Mesh);
+    const WarpLayer layer = warp();
     run.timings.projectSeconds += layer.timings.projectSeconds / repetitions;
     run.timings.rasterSeconds += layer.timings.rasterSeconds / repetitions;
     run.timings.resolveSeconds += layer.timings.resolveSeconds / repetitions;
     run.triangles = layer.trianglesRasterized;
+    run.testedPerPixel = double(layer.pixelsTested) / double(layer.color.pixelCount());
   }
   run.seconds = secondsSince(start) / repetitions;
   return run;
@@ -41,7 +47,9 @@ std::string split(const WarpRun& run) {
   return "project " + formatNumber(100.0 * run.timings.projectSeconds / total, 0) + "%, raster " +
          formatNumber(100.0 * run.timings.rasterSeconds / total, 0) + "%, resolve " +
          formatNumber(100.0 * run.timings.resolveSeconds / total, 0) + "%; " +
-         formatNumber(double(run.triangles) / run.timings.rasterSeconds / 1e6, 1) + " M triangles/s set up in raster";
+         formatNumber(double(run.triangles) / run.timings.rasterSeconds / 1e6, 1) +
+         " M triangles/s set up in raster, " + formatNumber(run.testedPerPixel, 1) +
+         " pixel centres tested per destination pixel";
 }
 
 }  // namespace
@@ -74,6 +82,11 @@ void benchWarp(BenchTable& table, const BenchViews& views, int decimationWidth) 
                formatNumber(megapixels / all.seconds, 2) + " source Mpixel/s",
                formatNumber(1000.0 * all.seconds, 1) + " ms per warp; " + split(all) + "; source preparation " +
                    formatNumber(1000.0 * prepareSeconds, 1) + " ms" + agreement});
+    // The plain scan of each triangle's whole range, which the row spans replace.
+    const WarpRun scanned = timeWarps(source, destination, 5, PanoramaRaster::BoundingBox);
+    table.add({name + ", every pixel of each triangle's range tested, all threads", size,
+               formatNumber(megapixels / scanned.seconds, 2) + " source Mpixel/s",
+               formatNumber(1000.0 * scanned.seconds, 1) + " ms per warp; " + split(scanned)});
     if (mesh != SourceMesh::Grid) continue;
     tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
     const WarpRun one = timeWarps(source, destination, 3);

@@ -300,6 +300,10 @@ public:
 
   bool degenerate() const { return volume_ == 0.0; }
 
+  // The normal of edge i's plane on the triangle's side: covers() needs
+  // dot(inwardNormal(i), direction) >= 0 for all three.
+  glm::dvec3 inwardNormal(int i) const { return volume_ > 0.0 ? normals_[i] : -normals_[i]; }
+
   bool covers(glm::dvec3 direction, Coverage& coverage) const {
     double sum = 0.0;
     for (int i = 0; i < 3; ++i) {
@@ -323,7 +327,9 @@ private:
 struct DirectionTable {
   std::vector<double> cosTheta, sinTheta, cosPhi, sinPhi;
   std::vector<double> tanLatitude;  // |tan| of the latitude k rows from a pole, k <= H / 2
-  explicit DirectionTable(const EquirectProjection& projection) {
+  int width;
+  double yaw;
+  explicit DirectionTable(const EquirectProjection& projection) : width(projection.width), yaw(projection.yaw) {
     for (int u = 0; u < projection.width; ++u) {
       const glm::vec3 d = projection.pixelDirection(u, projection.height / 2);
       const double theta = std::atan2(double(d.y), double(d.x));
@@ -340,6 +346,10 @@ struct DirectionTable {
     }
   }
   glm::dvec3 at(int u, int v) const { return {cosPhi[size_t(v)] * cosTheta[size_t(u)], cosPhi[size_t(v)] * sinTheta[size_t(u)], sinPhi[size_t(v)]}; }
+  // The (fractional) column whose centre looks at longitude theta, up to whole turns.
+  double columnAt(double theta) const {
+    return (theta + std::numbers::pi - yaw) * width / (2.0 * std::numbers::pi) - 0.5;
+  }
 };
 
 // The candidate pixels of a spherical triangle: its rows and columns from
@@ -435,6 +445,77 @@ PixelRange sphericalRange(const ProjectedVertex* v[3], bool atInfinity, const Di
   return range;
 }
 
+// Panorama destinations: the columns of a row a spherical triangle can
+// cover. On the row of latitude phi, edge i admits the directions w with
+// dot(n, w) >= 0 (n its inward normal): R cos(theta - alpha) + c >= 0 with
+// R = cos(phi) |n_xy|, alpha the longitude of n_xy and c = sin(phi) n_z,
+// which is one arc of longitudes, none or all. A row's span is the
+// intersection of the three arcs with the triangle's range, widened by a
+// column on each side (far beyond any rounding), so the exact test still
+// decides every pixel and the layer is the one a scan of the whole range
+// gives. Worth its three arc cosines a row only for wide triangles: a
+// simplified mesh's walls and floors span tens of columns and cover a few
+// percent of their range (docs/BENCHMARKS.md).
+class RowSpans {
+public:
+  RowSpans(const SphericalTriangle& triangle, const DirectionTable& directions, const PixelRange& range)
+      : directions_(directions), range_(range) {
+    const double middle = 0.5 * (range.x0 + range.x1), width = directions.width;
+    for (int i = 0; i < 3; ++i) {
+      const glm::dvec3 n = triangle.inwardNormal(i);
+      Edge& edge = edges_[i];
+      edge.horizontal = std::hypot(n.x, n.y);
+      edge.vertical = n.z;
+      edge.tolerance = 1e-9 * glm::length(n);
+      edge.centre = directions.columnAt(std::atan2(n.y, n.x));
+      edge.centre += width * std::round((middle - edge.centre) / width);
+    }
+  }
+
+  // The columns of row y (unwrapped, within the range) left to test, or
+  // false when no edge-admitted pixel centre is left in the row.
+  bool span(int y, int& first, int& last) const {
+    const double width = directions_.width, columnsPerRadian = width / (2.0 * std::numbers::pi);
+    double low = range_.x0, high = range_.x1;
+    for (const Edge& edge : edges_) {
+      const double r = directions_.cosPhi[size_t(y)] * edge.horizontal;
+      const double c = directions_.sinPhi[size_t(y)] * edge.vertical;
+      if (c >= r) continue;                       // admits every longitude
+      if (-c > r + edge.tolerance) return false;  // admits none: dot(n, w) <= r + c < 0
+      if (r <= edge.tolerance) continue;          // too close to call: no narrowing
+      const double half = std::acos(std::clamp(-c / r, -1.0, 1.0)) * columnsPerRadian + 1.0;
+      if (half >= 0.5 * width) continue;
+      // The arc's copies a turn apart that meet [low, high]; their hull.
+      double newLow = high + 1.0, newHigh = low - 1.0;
+      for (const double turn : {-width, 0.0, width}) {
+        const double from = std::max(low, edge.centre + turn - half), to = std::min(high, edge.centre + turn + half);
+        if (from > to) continue;
+        newLow = std::min(newLow, from);
+        newHigh = std::max(newHigh, to);
+      }
+      if (newLow > newHigh) return false;
+      low = newLow, high = newHigh;
+    }
+    first = ceilToInt(low);
+    last = floorToInt(high);
+    return first <= last;
+  }
+
+private:
+  struct Edge {
+    double horizontal, vertical;  // |n_xy| and n_z
+    double tolerance;             // below which a value of dot(n, w) is rounding
+    double centre;                // column of alpha, the nearest copy to the range
+  };
+  const DirectionTable& directions_;
+  PixelRange range_;
+  Edge edges_[3];
+};
+
+// Triangles at least this many columns wide get row spans; narrower ones
+// test their few columns directly.
+constexpr int kRowSpanMinimumColumns = 32;
+
 // Pinhole destinations: edge functions in the image plane, computed the
 // same way whichever way an edge is directed so that neighbours agree
 // exactly on which side a pixel centre lies (no cracks); attributes are
@@ -516,7 +597,7 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 }  // namespace
 
 WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destination, WarpMethod method,
-                       LayerReliability reliability) {
+                       LayerReliability reliability, PanoramaRaster raster) {
   WarpTimings timings;
   auto stageStart = Clock::now();
   const int width = destination.width(), height = destination.height();
@@ -533,7 +614,7 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
   stageStart = Clock::now();
 
   std::vector<uint64_t> zBuffer(size_t(width) * size_t(height), kEmpty);
-  std::atomic<uint64_t> rasterized{0};
+  std::atomic<uint64_t> rasterized{0}, tested{0};
   const uint32_t pointCount = source.pixelVertexCount();
 
   // Points: every pixel in the point warp; in the mesh warp, orphans
@@ -550,7 +631,7 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
     const uint32_t triangleCount = source.triangleCount();
     TRIWALK_CHECK(triangleCount < (1u << 30), "source too large for the z-buffer payload");
     tbb::parallel_for(tbb::blocked_range<uint32_t>(0, triangleCount, 2048), [&](const tbb::blocked_range<uint32_t>& r) {
-      uint64_t localRasterized = 0;
+      uint64_t localRasterized = 0, localTested = 0;
       for (uint32_t t = r.begin(); t != r.end(); ++t) {
         if (!source.triangleKept(t)) continue;
         uint32_t indices[3];
@@ -567,18 +648,32 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
           if (range.x0 > range.x1 || range.y0 > range.y1) continue;
           const SphericalTriangle triangle(v, source.atInfinity(indices[0]));
           if (triangle.degenerate()) continue;
-          for (int y = range.y0; y <= range.y1; ++y) {
-            for (int column = range.x0; column <= range.x1; ++column) {
+          const auto scanRow = [&](int y, int first, int last) {
+            for (int column = first; column <= last; ++column) {
               const int x = column < 0 ? column + width : column >= width ? column - width : column;
               if (!triangle.covers(directions->at(x, y), coverage)) continue;
               atomicMin(zBuffer[size_t(y) * size_t(width) + size_t(x)],
                         makeKey(distanceFromInverse(coverage.inverseDistance), payload));
             }
+          };
+          if (raster == PanoramaRaster::RowSpans && range.x1 - range.x0 + 1 >= kRowSpanMinimumColumns) {
+            const RowSpans spans(triangle, *directions, range);
+            for (int y = range.y0; y <= range.y1; ++y) {
+              int first, last;
+              if (!spans.span(y, first, last)) continue;
+              localTested += uint64_t(last - first + 1);
+              scanRow(y, first, last);
+            }
+          } else {
+            localTested += uint64_t(range.x1 - range.x0 + 1) * uint64_t(range.y1 - range.y0 + 1);
+            for (int y = range.y0; y <= range.y1; ++y) scanRow(y, range.x0, range.x1);
           }
         } else {
           const PlanarTriangle triangle(v);
           if (triangle.degenerate()) continue;
           const PixelRange range = triangle.range(width, height);
+          localTested +=
+              uint64_t(std::max(0, range.x1 - range.x0 + 1)) * uint64_t(std::max(0, range.y1 - range.y0 + 1));
           for (int y = range.y0; y <= range.y1; ++y) {
             for (int x = range.x0; x <= range.x1; ++x) {
               if (!triangle.covers(x, y, coverage)) continue;
@@ -589,6 +684,7 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
         }
       }
       rasterized += localRasterized;
+      tested += localTested;
     });
   }
   timings.rasterSeconds = secondsSince(stageStart);
@@ -600,6 +696,7 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
       ScalarImage(width, height, std::numeric_limits<float>::infinity()),
       std::vector<uint8_t>(size_t(width) * size_t(height), 0),
       rasterized.load(),
+      tested.load(),
       WarpTimings{},
       std::vector<float>(reliability == LayerReliability::Computed ? size_t(width) * size_t(height) : 0, 1.0f)};
   tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {

@@ -198,6 +198,7 @@ struct WarpLayer {
   ScalarImage distance;       // metres from the destination centre; +inf = sky
   std::vector<uint8_t> covered;  // 1 where the source put something
   uint64_t trianglesRasterized = 0;
+  uint64_t pixelsTested = 0;  // pixel centres tested against a triangle in the raster
   WarpTimings timings;
   // Per pixel, how well the source sampled what the destination sees there
   // (core/synthesis/warp_reliability.h); empty means 1 everywhere.
@@ -214,7 +215,15 @@ struct WarpLayer {
 // reliability reads it (a tenth of a warp's time to compute).
 enum class LayerReliability { Computed, Omitted };
 
+// Which pixel centres of a panorama destination the raster tests against a
+// triangle: those of each row's span (the default), or every one of the
+// triangle's range (the plain scan, kept to measure the spans against).
+// Both give the same layer: the span only leaves out centres no triangle
+// edge admits.
+enum class PanoramaRaster { RowSpans, BoundingBox };
+
 WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destination, WarpMethod method,
-                       LayerReliability reliability = LayerReliability::Computed);
+                       LayerReliability reliability = LayerReliability::Computed,
+                       PanoramaRaster raster = PanoramaRaster::RowSpans);
 
 }  // namespace triwalk

@@ -34,6 +34,7 @@ void benchDecimate(BenchTable& table, const Scene& scene, const std::string& dat
   TriangleErrorSettings settings;
   settings.width = errorWidth;
   settings.synthesis.blend.weights = kSelectionBlendWeights;  // as decimate prices collapses
+  settings.synthesis.warp.mesh = kSelectionSourceMesh;
   const auto loadStart = BenchClock::now();
   // Progress on stderr (minutes of work); the table goes to stdout.
   constexpr bool kQuiet = false;

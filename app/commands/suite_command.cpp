@@ -181,6 +181,7 @@ void registerSuiteCommand(CLI::App& app) {
     bool quiet = false;
     SelectionArguments selection;
     std::string selectionBlendWeights = blendWeightsName(kSelectionBlendWeights);
+    std::string selectionSourceMesh = sourceMeshName(kSelectionSourceMesh);
     int selectionErrorWidth = 0;  // 0: the evaluation's
     ErrorArguments errors;
   };
@@ -200,11 +201,17 @@ void registerSuiteCommand(CLI::App& app) {
                       "evaluated with)")
       ->capture_default_str()->check(CLI::IsMember({"reliability", "distance"}));
   command
+      ->add_option("--selection-source-mesh", arguments->selectionSourceMesh,
+                   "Source meshes of the errors the selection is made with (--source-mesh: those it is "
+                   "evaluated with)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"simplified", "grid"}));
+  command
       ->add_option("--selection-error-width", arguments->selectionErrorWidth,
                    "Panorama width of the errors the selection is made with (default: --error-width, the "
                    "evaluation's)")
       ->check(nonNegativeNumber());
-  addErrorOptions(*command, arguments->errors, BlendOptions{}.weights);
+  addErrorOptions(*command, arguments->errors, BlendOptions{}.weights, WarpOptions{}.mesh);
 
   command->callback([arguments] {
     const Arguments& a = *arguments;
@@ -244,6 +251,7 @@ void registerSuiteCommand(CLI::App& app) {
       const TriangleErrorSettings settings = triangleErrorSettings(a.errors, dataset);
       TriangleErrorSettings selectionErrorSettings = settings;
       selectionErrorSettings.synthesis.blend.weights = parseBlendWeights(a.selectionBlendWeights);
+      selectionErrorSettings.synthesis.warp.mesh = parseSourceMesh(a.selectionSourceMesh);
       if (a.selectionErrorWidth > 0) {
         dataset.downsamplingFactor(a.selectionErrorWidth, "--selection-error-width");
         selectionErrorSettings.width = a.selectionErrorWidth;

@@ -4,8 +4,9 @@
 
 namespace triwalk {
 
-void addErrorOptions(CLI::App& command, ErrorArguments& arguments, BlendWeights weights) {
+void addErrorOptions(CLI::App& command, ErrorArguments& arguments, BlendWeights weights, SourceMesh mesh) {
   arguments.quality.blendWeights = blendWeightsName(weights);
+  arguments.quality.sourceMesh = sourceMeshName(mesh);
   command.add_option("--error-width", arguments.width,
                      "Panorama width errors are computed at (divides the data set's width; default: the largest such "
                      "width not above " + std::to_string(kDefaultErrorWidth) + ")")

@@ -64,7 +64,7 @@ public:
     // sees; live decimation measures its errors as decimate does by
     // default, so its steps match the command's.
     errorSettings.synthesis.holes = kDefaultErrorHoles;
-    errorSettings.synthesis.warp.mesh = WarpOptions{}.mesh;
+    errorSettings.synthesis.warp.mesh = kSelectionSourceMesh;
     errorSettings.synthesis.blend.weights = kSelectionBlendWeights;
     session_ = std::make_unique<DecimationSession>(dataset_, errorSettings, DecimationOptions{}, selection);
     state_.dataset = &dataset_;

@@ -84,6 +84,14 @@ inline constexpr HoleMode kDefaultErrorHoles = HoleMode::Black;
 // with blend weights by reliability").
 inline constexpr BlendWeights kSelectionBlendWeights = BlendWeights::Distance;
 
+// The source meshes the selection warps with unless asked (the same
+// commands; evaluation and frames choose their own). Simplified meshes
+// make an error 1.65x faster at 256x128 and the main job's decimation a
+// quarter shorter, with selections as good on the built-in scene's probes
+// (docs/RESULTS.md, "Selecting on simplified meshes"); the grid stays
+// until the suite's levels confirm that on more than one scene.
+inline constexpr SourceMesh kSelectionSourceMesh = SourceMesh::Grid;
+
 struct TriangleErrorSettings {
   int width = kDefaultErrorWidth;  // panorama width the errors are computed at
   size_t layerCacheBytes = defaultLayerCacheBytes();  // warped layers kept for reuse

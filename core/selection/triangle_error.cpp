@@ -19,7 +19,10 @@ int errorWidthFor(const Dataset& dataset, int requested) {
 }
 
 DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const TriangleErrorSettings& settings, bool quiet)
-    : dataset_(dataset), settings_(settings), layerCache_(settings.layerCacheBytes) {
+    : dataset_(dataset),
+      settings_(settings),
+      layerCache_(settings.layerCacheBytes,
+                  CompactLayer::bytesFor(size_t(settings.width) * size_t(settings.width / 2), layerReliability())) {
   dataset.downsamplingFactor(settings.width, "--error-width");
   const int samples = dataset.sampleCount(), probes = dataset.probeCount();
   sources_.resize(size_t(samples));
@@ -130,9 +133,7 @@ ReconstructionError DatasetTriangleErrors::errorAt(std::span<const int> referenc
 double DatasetTriangleErrors::sampleError(const Triangle& triangle, int destination) {
   const glm::vec3 position = dataset_.sample(destination).position;
   const DestinationCamera camera = DestinationCamera::panorama(position, settings_.width, settings_.width / 2);
-  const LayerReliability reliability = settings_.synthesis.blend.weights == BlendWeights::Reliability
-                                           ? LayerReliability::Computed
-                                           : LayerReliability::Omitted;
+  const LayerReliability reliability = layerReliability();
   std::shared_ptr<const CompactLayer> layers[3];
   const CompactLayer* pointers[3];
   glm::vec3 sourcePositions[3];

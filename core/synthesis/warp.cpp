@@ -208,7 +208,9 @@ glm::vec3 WarpSource::colorAlong(glm::vec3 direction) const {
   const float fx = p.x - 0.5f, fy = std::clamp(p.y - 0.5f, 0.0f, float(height_ - 1));
   const int x0 = int(std::floor(fx)), y0 = int(fy);
   const float tx = fx - float(x0), ty = fy - float(y0);
-  const int xa = (x0 % width_ + width_) % width_, xb = (xa + 1) % width_;
+  // imagePoint's x lies in [0, W), so x0 is -1 to W - 1: wrap by a compare,
+  // not a division (this runs for every pixel a simplified warp covers).
+  const int xa = x0 < 0 ? x0 + width_ : x0, xb = xa + 1 == width_ ? 0 : xa + 1;
   const int ya = y0, yb = std::min(y0 + 1, height_ - 1);
   auto at = [&](int x, int y) { return texture_.pixels[size_t(y) * size_t(width_) + size_t(x)]; };
   return (1.0f - ty) * ((1.0f - tx) * at(xa, ya) + tx * at(xb, ya)) + ty * ((1.0f - tx) * at(xa, yb) + tx * at(xb, yb));

@@ -19,10 +19,7 @@ int errorWidthFor(const Dataset& dataset, int requested) {
 }
 
 DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const TriangleErrorSettings& settings, bool quiet)
-    : dataset_(dataset),
-      settings_(settings),
-      layerCache_(settings.layerCacheBytes,
-                  CompactLayer::bytesFor(size_t(settings.width) * size_t(settings.width / 2), layerReliability())) {
+    : dataset_(dataset), settings_(settings), layerCache_(settings.layerCacheBytes) {
   dataset.downsamplingFactor(settings.width, "--error-width");
   const int samples = dataset.sampleCount(), probes = dataset.probeCount();
   sources_.resize(size_t(samples));
@@ -133,7 +130,9 @@ ReconstructionError DatasetTriangleErrors::errorAt(std::span<const int> referenc
 double DatasetTriangleErrors::sampleError(const Triangle& triangle, int destination) {
   const glm::vec3 position = dataset_.sample(destination).position;
   const DestinationCamera camera = DestinationCamera::panorama(position, settings_.width, settings_.width / 2);
-  const LayerReliability reliability = layerReliability();
+  const LayerReliability reliability = settings_.synthesis.blend.weights == BlendWeights::Reliability
+                                           ? LayerReliability::Computed
+                                           : LayerReliability::Omitted;
   std::shared_ptr<const CompactLayer> layers[3];
   const CompactLayer* pointers[3];
   glm::vec3 sourcePositions[3];

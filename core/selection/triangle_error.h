@@ -131,11 +131,6 @@ public:
 private:
   // E of a triangle reconstructing a destination sample, from cached layers.
   double sampleError(const Triangle& triangle, int destination);
-  // Whether warped layers carry their reliability: only its blend reads it.
-  LayerReliability layerReliability() const {
-    return settings_.synthesis.blend.weights == BlendWeights::Reliability ? LayerReliability::Computed
-                                                                          : LayerReliability::Omitted;
-  }
 
   const Dataset& dataset_;
   TriangleErrorSettings settings_;

@@ -7,39 +7,18 @@
 
 namespace triwalk {
 
-namespace {
-
-// Chunks the pool asks the kernel for: a few dozen layers at the error
-// width's 256x128, so a chunk is many whole huge pages.
-constexpr size_t kLayerChunkBytes = size_t(32) << 20;
-
-}  // namespace
-
-size_t CompactLayer::bytesFor(size_t pixels, LayerReliability reliability) {
-  return (reliability == LayerReliability::Computed ? 5 : 4) * pixels * sizeof(Imath::half);
-}
-
-CompactLayer::CompactLayer(const WarpLayer& layer, std::pmr::memory_resource* memory)
-    : pixels_(layer.covered.size()),
-      hasReliability_(!layer.reliability.empty()),
-      values_(bytesFor(pixels_, hasReliability_ ? LayerReliability::Computed : LayerReliability::Omitted) /
-                  sizeof(Imath::half),
-              memory) {
+CompactLayer::CompactLayer(const WarpLayer& layer)
+    : values_(4 * layer.covered.size()), reliability_(layer.reliability.empty() ? 0 : layer.covered.size()) {
   const Imath::half notCovered(std::numeric_limits<float>::quiet_NaN());
-  for (size_t i = 0; i < pixels_; ++i) {
+  for (size_t i = 0; i < layer.covered.size(); ++i) {
     const glm::vec3 color = layer.color.pixels[i];
     values_[4 * i + 0] = Imath::half(color.r);
     values_[4 * i + 1] = Imath::half(color.g);
     values_[4 * i + 2] = Imath::half(color.b);
     values_[4 * i + 3] = layer.covered[i] ? Imath::half(layer.distance.pixels[i]) : notCovered;
   }
-  if (hasReliability_) {
-    for (size_t i = 0; i < pixels_; ++i) values_[4 * pixels_ + i] = Imath::half(layer.reliability[i]);
-  }
+  for (size_t i = 0; i < reliability_.size(); ++i) reliability_[i] = Imath::half(layer.reliability[i]);
 }
-
-WarpLayerCache::WarpLayerCache(size_t budgetBytes, size_t layerBytes)
-    : budgetBytes_(budgetBytes), memory_(layerBytes, kLayerChunkBytes) {}
 
 size_t WarpLayerCache::bytes() const {
   std::lock_guard lock(mutex_);
@@ -58,7 +37,7 @@ std::shared_ptr<const CompactLayer> WarpLayerCache::get(int source, int destinat
     }
     ++misses_;
   }
-  auto layer = std::make_shared<const CompactLayer>(make(), memory_.resource());
+  auto layer = std::make_shared<const CompactLayer>(make());
   std::lock_guard lock(mutex_);
   const auto found = index_.find(key);
   if (found != index_.end()) return found->second->second;  // another thread made it meanwhile

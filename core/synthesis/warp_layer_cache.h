@@ -4,11 +4,9 @@
 // destination, and a dense sample is reconstructed from many triangles as
 // decimation proceeds, so most warps are needed again. Layers are kept in
 // half floats (10 bytes a pixel: the capture's own colour precision), least
-// recently used first out once the memory budget is reached, in a pool of
-// huge pages (the cache fills gigabytes, and fresh 4 KiB pages cost a fault
-// each). The cache changes speed only, never a result.
+// recently used first out once the memory budget is reached. The cache
+// changes speed only, never a result.
 
-#include "core/support/huge_page_memory.h"
 #include "core/synthesis/warp.h"
 
 #include <Imath/half.h>
@@ -17,7 +15,6 @@
 #include <functional>
 #include <list>
 #include <memory>
-#include <memory_resource>
 #include <mutex>
 #include <unordered_map>
 
@@ -29,10 +26,7 @@ namespace triwalk {
 // Read through the same per-pixel view as WarpLayer, for the blend.
 class CompactLayer {
 public:
-  CompactLayer(const WarpLayer& layer, std::pmr::memory_resource* memory);
-
-  // What a layer of this many pixels takes, in one allocation.
-  static size_t bytesFor(size_t pixels, LayerReliability reliability);
+  explicit CompactLayer(const WarpLayer& layer);
 
   bool coveredAt(size_t pixel) const { return !values_[4 * pixel + 3].isNan(); }
   float distanceAt(size_t pixel) const { return float(values_[4 * pixel + 3]); }
@@ -40,22 +34,17 @@ public:
     const Imath::half* v = &values_[4 * pixel];
     return {float(v[0]), float(v[1]), float(v[2])};
   }
-  float reliabilityAt(size_t pixel) const { return hasReliability_ ? float(values_[4 * pixels_ + pixel]) : 1.0f; }
-  size_t bytes() const { return values_.size() * sizeof(Imath::half); }
+  float reliabilityAt(size_t pixel) const { return reliability_.empty() ? 1.0f : float(reliability_[pixel]); }
+  size_t bytes() const { return (values_.size() + reliability_.size()) * sizeof(Imath::half); }
 
 private:
-  size_t pixels_;
-  bool hasReliability_;
-  // r, g, b and distance of each pixel, then each pixel's reliability when
-  // the layer has one: one block, so the cache's pool holds equal blocks.
-  std::pmr::vector<Imath::half> values_;
+  std::vector<Imath::half> values_;
+  std::vector<Imath::half> reliability_;
 };
 
 class WarpLayerCache {
 public:
-  // layerBytes: what each layer takes (CompactLayer::bytesFor), the pool's
-  // block.
-  WarpLayerCache(size_t budgetBytes, size_t layerBytes);
+  explicit WarpLayerCache(size_t budgetBytes) : budgetBytes_(budgetBytes) {}
 
   // The layer of source warped to destination; make() computes it on a
   // miss (outside the lock, so misses run in parallel).
@@ -71,7 +60,6 @@ private:
   using Entry = std::pair<Key, std::shared_ptr<const CompactLayer>>;
 
   size_t budgetBytes_;
-  HugePagePool memory_;  // before the layers: they return their blocks to it
   size_t bytes_ = 0;
   std::list<Entry> recency_;  // most recent first
   std::unordered_map<Key, std::list<Entry>::iterator> index_;

@@ -85,12 +85,12 @@ inline constexpr HoleMode kDefaultErrorHoles = HoleMode::Black;
 inline constexpr BlendWeights kSelectionBlendWeights = BlendWeights::Distance;
 
 // The source meshes the selection warps with unless asked (the same
-// commands; evaluation and frames choose their own). Simplified meshes
-// make an error 1.65x faster at 256x128 and the main job's decimation a
-// quarter shorter, with selections as good on the built-in scene's probes
-// (docs/RESULTS.md, "Selecting on simplified meshes"); the grid stays
-// until the suite's levels confirm that on more than one scene.
-inline constexpr SourceMesh kSelectionSourceMesh = SourceMesh::Grid;
+// commands; evaluation and frames choose their own, the grid). Simplified
+// meshes make an error 1.65x faster at 256x128 and the main job's
+// decimation a quarter shorter, with selections as good on the held-out
+// probes of the suite's six scenes (+0.2% +- 0.8% over its 18 rows,
+// paired; docs/RESULTS.md, "Selecting on simplified meshes").
+inline constexpr SourceMesh kSelectionSourceMesh = SourceMesh::Simplified;
 
 struct TriangleErrorSettings {
   int width = kDefaultErrorWidth;  // panorama width the errors are computed at

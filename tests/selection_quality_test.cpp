@@ -52,6 +52,27 @@ double spearman(const std::vector<double>& x, const std::vector<double>& y) {
 
 }  // namespace
 
+TEST_CASE("the selection's defaults are applied over a command's synthesis options, the rest kept") {
+  SynthesisOptions walker;  // what a viewer shows: holes filled, reliability weights, the grid
+  walker.holes = HoleMode::Fill;
+  walker.blend.weights = BlendWeights::Reliability;
+  walker.warp.mesh = SourceMesh::Grid;
+  walker.warp.grazingAngleDegrees = 7.5f;
+  walker.warp.meshTolerancePixels = 0.5f;
+  const SynthesisOptions selection = withSelectionDefaults(walker);
+  CHECK(selection.holes == kDefaultErrorHoles);
+  CHECK(selection.holes != walker.holes);
+  CHECK(selection.blend.weights == kSelectionBlendWeights);
+  CHECK(selection.warp.mesh == kSelectionSourceMesh);
+  CHECK(selection.warp.grazingAngleDegrees == 7.5f);
+  CHECK(selection.warp.meshTolerancePixels == 0.5f);
+  // decimate's defaults are these: TriangleErrorSettings' (eval's) but for the selection's own.
+  const SynthesisOptions decimate = withSelectionDefaults(TriangleErrorSettings{}.synthesis);
+  CHECK(decimate.warp.mesh == kSelectionSourceMesh);
+  CHECK(decimate.blend.weights == kSelectionBlendWeights);
+  CHECK(decimate.holes == TriangleErrorSettings{}.synthesis.holes);
+}
+
 TEST_CASE("the served-sample cost puts the references where reconstructions fail: the cluttered half") {
   testing::TemporaryDirectory directory;
   testing::writeWallAndClutterDataset(directory / "data", kPaths, kSteps, kWidth, 0);

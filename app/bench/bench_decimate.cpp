@@ -33,8 +33,7 @@ void benchDecimate(BenchTable& table, const Scene& scene, const std::string& dat
                            "x" + std::to_string(errorWidth / 2);
   TriangleErrorSettings settings;
   settings.width = errorWidth;
-  settings.synthesis.blend.weights = kSelectionBlendWeights;  // as decimate prices collapses
-  settings.synthesis.warp.mesh = kSelectionSourceMesh;
+  settings.synthesis = withSelectionDefaults(settings.synthesis);  // as decimate prices collapses
   const auto loadStart = BenchClock::now();
   // Progress on stderr (minutes of work); the table goes to stdout.
   constexpr bool kQuiet = false;

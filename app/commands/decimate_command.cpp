@@ -40,7 +40,7 @@ void registerDecimateCommand(CLI::App& app) {
       ->check(nonNegativeNumber());
   addSelectionOptions(*command, arguments->selection);
   command->add_flag("--quiet", arguments->quiet, "No progress output");
-  addErrorOptions(*command, arguments->errors, kSelectionBlendWeights, kSelectionSourceMesh);
+  addErrorOptions(*command, arguments->errors, withSelectionDefaults(TriangleErrorSettings{}.synthesis));
 
   command->callback([arguments] {
     const Arguments& a = *arguments;

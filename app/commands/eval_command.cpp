@@ -107,7 +107,7 @@ void registerEvalCommand(CLI::App& app) {
                       "(decimate with --target at or below the smallest)")
       ->delimiter(',');
   command->add_flag("--quiet", arguments->quiet, "No progress output");
-  addErrorOptions(*command, arguments->errors, BlendOptions{}.weights, WarpOptions{}.mesh);
+  addErrorOptions(*command, arguments->errors, TriangleErrorSettings{}.synthesis);
 
   command->callback([arguments] {
     const Arguments& a = *arguments;

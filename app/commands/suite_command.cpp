@@ -180,8 +180,8 @@ void registerSuiteCommand(CLI::App& app) {
     bool reuseSelections = false;
     bool quiet = false;
     SelectionArguments selection;
-    std::string selectionBlendWeights = blendWeightsName(kSelectionBlendWeights);
-    std::string selectionSourceMesh = sourceMeshName(kSelectionSourceMesh);
+    std::string selectionBlendWeights = blendWeightsName(withSelectionDefaults({}).blend.weights);
+    std::string selectionSourceMesh = sourceMeshName(withSelectionDefaults({}).warp.mesh);
     int selectionErrorWidth = 0;  // 0: the evaluation's
     ErrorArguments errors;
   };
@@ -211,7 +211,7 @@ void registerSuiteCommand(CLI::App& app) {
                    "Panorama width of the errors the selection is made with (default: --error-width, the "
                    "evaluation's)")
       ->check(nonNegativeNumber());
-  addErrorOptions(*command, arguments->errors, BlendOptions{}.weights, WarpOptions{}.mesh);
+  addErrorOptions(*command, arguments->errors, TriangleErrorSettings{}.synthesis);
 
   command->callback([arguments] {
     const Arguments& a = *arguments;

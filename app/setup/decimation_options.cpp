@@ -4,9 +4,9 @@
 
 namespace triwalk {
 
-void addErrorOptions(CLI::App& command, ErrorArguments& arguments, BlendWeights weights, SourceMesh mesh) {
-  arguments.quality.blendWeights = blendWeightsName(weights);
-  arguments.quality.sourceMesh = sourceMeshName(mesh);
+void addErrorOptions(CLI::App& command, ErrorArguments& arguments, const SynthesisOptions& defaults) {
+  arguments.quality.blendWeights = blendWeightsName(defaults.blend.weights);
+  arguments.quality.sourceMesh = sourceMeshName(defaults.warp.mesh);
   command.add_option("--error-width", arguments.width,
                      "Panorama width errors are computed at (divides the data set's width; default: the largest such "
                      "width not above " + std::to_string(kDefaultErrorWidth) + ")")
@@ -15,7 +15,7 @@ void addErrorOptions(CLI::App& command, ErrorArguments& arguments, BlendWeights 
                      "Where a triangle's error is measured: centroid (the paper's), quadrature (centroid and the "
                      "three sub-triangle centroids) or interior (up to 8 samples inside it)")
       ->capture_default_str()->check(CLI::IsMember({"centroid", "quadrature", "interior"}));
-  addQualityOptions(command, arguments.quality, kDefaultErrorHoles);
+  addQualityOptions(command, arguments.quality, defaults.holes);
 }
 
 TriangleErrorSettings triangleErrorSettings(const ErrorArguments& arguments, const Dataset& dataset) {

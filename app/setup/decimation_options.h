@@ -17,10 +17,10 @@ struct ErrorArguments {
   QualityArguments quality;
 };
 
-// weights and mesh: the command's default --blend-weights and --source-mesh
-// (kSelectionBlendWeights and kSelectionSourceMesh for decimate, the
-// reconstruction's for eval and the suite's evaluation).
-void addErrorOptions(CLI::App& command, ErrorArguments& arguments, BlendWeights weights, SourceMesh mesh);
+// defaults: the command's default --holes, --blend-weights and
+// --source-mesh (withSelectionDefaults for decimate, TriangleErrorSettings'
+// for eval and the suite's evaluation).
+void addErrorOptions(CLI::App& command, ErrorArguments& arguments, const SynthesisOptions& defaults);
 
 // How references are selected, apart from the stopping rule (threshold
 // and target), which decimate and suite set their own way.

@@ -59,13 +59,10 @@ public:
     if (!options.selection.empty()) selection = readSelection(options.selection, dataset_);
     TriangleErrorSettings errorSettings;
     errorSettings.width = errorWidthFor(dataset_, options.errorWidth);
-    errorSettings.synthesis = options.synthesis;
     // --holes, --source-mesh and --blend-weights choose what the walker
     // sees; live decimation measures its errors as decimate does by
     // default, so its steps match the command's.
-    errorSettings.synthesis.holes = kDefaultErrorHoles;
-    errorSettings.synthesis.warp.mesh = kSelectionSourceMesh;
-    errorSettings.synthesis.blend.weights = kSelectionBlendWeights;
+    errorSettings.synthesis = withSelectionDefaults(options.synthesis);
     session_ = std::make_unique<DecimationSession>(dataset_, errorSettings, DecimationOptions{}, selection);
     state_.dataset = &dataset_;
     state_.session = session_.get();

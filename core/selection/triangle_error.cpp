@@ -47,6 +47,13 @@ DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const Trian
   throwIfInterrupted();
 }
 
+SynthesisOptions withSelectionDefaults(SynthesisOptions synthesis) {
+  synthesis.holes = kDefaultErrorHoles;
+  synthesis.warp.mesh = kSelectionSourceMesh;
+  synthesis.blend.weights = kSelectionBlendWeights;
+  return synthesis;
+}
+
 TriangleDestinations parseTriangleDestinations(const std::string& name) {
   if (name == "centroid") return TriangleDestinations::Centroid;
   if (name == "quadrature") return TriangleDestinations::Quadrature;

@@ -92,6 +92,13 @@ inline constexpr BlendWeights kSelectionBlendWeights = BlendWeights::Distance;
 // paired; docs/RESULTS.md, "Selecting on simplified meshes").
 inline constexpr SourceMesh kSelectionSourceMesh = SourceMesh::Simplified;
 
+// A command's synthesis options with the selection's defaults on top (the
+// error's holes, kSelectionSourceMesh, kSelectionBlendWeights), the rest
+// (stretch test, tolerances) kept: the one place the selection's defaults
+// are applied, by decimate's and the suite's option defaults, the viewer's
+// live decimation and bench decimate alike.
+SynthesisOptions withSelectionDefaults(SynthesisOptions synthesis);
+
 struct TriangleErrorSettings {
   int width = kDefaultErrorWidth;  // panorama width the errors are computed at
   size_t layerCacheBytes = defaultLayerCacheBytes();  // warped layers kept for reuse

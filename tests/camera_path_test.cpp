@@ -8,7 +8,7 @@
 
 namespace triwalk {
 
-TEST_CASE("camera path round trip keeps every pose; comments and blank lines are skipped") {
+TEST_CASE("camera path round trip keeps every pose, and comments and blank lines are skipped") {
   testing::TemporaryDirectory directory;
   const std::vector<CameraPose> poses = {{{1.5f, -2.25f, 1.6f}, 90.0f, -10.0f}, {{0.0f, 0.0f, 1.0f}, -45.5f, 89.0f}};
   writeCameraPath(directory / "path.txt", poses);

@@ -130,7 +130,7 @@ TEST_CASE("plane with sky warped to a new position matches where the plane is no
   CHECK(bad <= compared / 200);
 }
 
-TEST_CASE("a pillar leaves a hole exactly where the wall is hidden from the source; a second source fills it") {
+TEST_CASE("a pillar leaves a hole exactly where the wall is hidden from the source, and a second source fills it") {
   //   y=4  ==========  back wall  ==========
   //                      region R: seen from D, hidden from S1 by the pillar
   //   y=2               ( pillar r=0.3 at x=0 )
@@ -216,7 +216,7 @@ TEST_CASE("the paper's point warp leaves cracks where the mesh warp does not") {
   CHECK(holes(points) > 0.05);
 }
 
-TEST_CASE("the stretch test drops rubber sheets; without it they hide what a second source sees") {
+TEST_CASE("the stretch test drops rubber sheets: without it they hide what a second source sees") {
   const AnalyticScene scene = roomWithPillar();
   const glm::vec3 s1(-1.0f, 0.0f, 1.5f), destination(1.0f, 0.0f, 1.5f), s2(2.0f, 0.0f, 1.5f);
   const Panorama truth = renderPanorama(scene, destination, kWidth);

@@ -628,7 +628,7 @@ TEST_CASE(
   auto run = [&](int threads, SourceMesh mesh) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
     settings.synthesis.warp.mesh = mesh;
-    DatasetTriangleErrors errors(dataset, settings, true);
+    DatasetTriangleErrors errors(dataset, settings, LoadedViews::Samples, true);
     DecimationOptions options;  // the default cost (served samples), with the paper's fixed boundary so that
     options.maxError = 0.0;     // the refinement has references on the boundary to move
     options.targetSamples = 5;

@@ -16,6 +16,8 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <fstream>
 #include <map>
 #include <numeric>
 #include <set>
@@ -73,13 +75,30 @@ TEST_CASE("the selection's defaults are applied over a command's synthesis optio
   CHECK(decimate.holes == TriangleErrorSettings{}.synthesis.holes);
 }
 
+TEST_CASE("a selection's errors load the samples alone, and the probes only when asked, to judge it") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 3, 3, 32, 2);
+  const Dataset dataset = Dataset::open(directory / "data");
+  // A probe no selection reads: decimate must not open it, eval must name it.
+  std::ofstream(directory / "data" / dataset.probe(1).file, std::ios::binary) << "this is not an OpenEXR file";
+  TriangleErrorSettings settings;
+  settings.width = 32;
+  DatasetTriangleErrors samples(dataset, settings, LoadedViews::Samples, true);
+  std::vector<double> values(1);
+  const Triangle triangle{0, 1, 3};
+  samples.computeErrors(std::span<const Triangle>(&triangle, 1), values);
+  CHECK(std::isfinite(values[0]));
+  testing::requireInputError([&] { DatasetTriangleErrors(dataset, settings, LoadedViews::SamplesAndProbes, true); },
+                             dataset.probe(1).file, "cannot read OpenEXR");
+}
+
 TEST_CASE("the served-sample cost puts the references where reconstructions fail: the cluttered half") {
   testing::TemporaryDirectory directory;
   testing::writeWallAndClutterDataset(directory / "data", kPaths, kSteps, kWidth, 0);
   const Dataset dataset = Dataset::open(directory / "data");
   TriangleErrorSettings errorSettings;
   errorSettings.width = kWidth;
-  DatasetTriangleErrors errors(dataset, errorSettings, true);
+  DatasetTriangleErrors errors(dataset, errorSettings, LoadedViews::Samples, true);
   SelectionSettings settings;
   settings.decimation.maxError = 0.0;
   settings.decimation.targetSamples = 16;
@@ -101,7 +120,7 @@ TEST_CASE("the served-sample cost ranks collapses by what they do to the probes 
   const Dataset dataset = Dataset::open(directory / "data");
   TriangleErrorSettings errorSettings;
   errorSettings.width = kWidth;
-  DatasetTriangleErrors errors(dataset, errorSettings, true);
+  DatasetTriangleErrors errors(dataset, errorSettings, LoadedViews::SamplesAndProbes, true);
   // A mesh neither cost chose: the Delaunay triangulation of 40 samples
   // picked by position alone.
   const std::vector<glm::dvec2> positions = samplePositions(dataset);
@@ -161,7 +180,7 @@ TEST_CASE("--relative-error stops where R times the dense mean triangle error sa
   const Dataset dataset = Dataset::open(directory / "data");
   TriangleErrorSettings errorSettings;
   errorSettings.width = 32;
-  DatasetTriangleErrors errors(dataset, errorSettings, true);
+  DatasetTriangleErrors errors(dataset, errorSettings, LoadedViews::Samples, true);
   const ViewMesh dense = ViewMesh::delaunay(samplePositions(dataset), {}, "test");
   std::vector<double> denseErrors(dense.triangles().size());
   errors.computeErrors(dense.triangles(), denseErrors);

@@ -37,7 +37,7 @@ void benchDecimate(BenchTable& table, const Scene& scene, const std::string& dat
   const auto loadStart = BenchClock::now();
   // Progress on stderr (minutes of work); the table goes to stdout.
   constexpr bool kQuiet = false;
-  DatasetTriangleErrors errors(dataset, settings, kQuiet);
+  DatasetTriangleErrors errors(dataset, settings, LoadedViews::Samples, kQuiet);
   const double loadSeconds = secondsSince(loadStart);
   // What `decimate --max-error 1.85` (the main job) runs: the default
   // cost, boundary and area weights, then the refinement.

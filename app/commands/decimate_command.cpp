@@ -54,7 +54,7 @@ void registerDecimateCommand(CLI::App& app) {
     std::printf("%s\n", describeErrorSettings(settings).c_str());
 
     InterruptScope interruptScope;
-    DatasetTriangleErrors errors(dataset, settings, a.quiet);
+    DatasetTriangleErrors errors(dataset, settings, LoadedViews::Samples, a.quiet);
     SelectionSettings selection = selectionSettings(a.selection, a.maxError, a.target);
     const bool noGoal = a.maxError <= 0.0 && a.relativeError <= 0.0 && a.target == 0;
     selection.relativeError = noGoal ? kDefaultRelativeError : a.relativeError;

@@ -117,7 +117,7 @@ void registerEvalCommand(CLI::App& app) {
     checkCounts(dataset, selection, a.counts);
     const TriangleErrorSettings settings = triangleErrorSettings(a.errors, dataset);
     InterruptScope interruptScope;
-    DatasetTriangleErrors errors(dataset, settings, a.quiet);
+    DatasetTriangleErrors errors(dataset, settings, LoadedViews::SamplesAndProbes, a.quiet);
 
     const std::vector<glm::dvec2> positions = samplePositions(dataset);
     const int count = int(selection.samples.size());

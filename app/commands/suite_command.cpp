@@ -180,12 +180,14 @@ void registerSuiteCommand(CLI::App& app) {
     bool reuseSelections = false;
     bool quiet = false;
     SelectionArguments selection;
-    std::string selectionBlendWeights = blendWeightsName(withSelectionDefaults({}).blend.weights);
-    std::string selectionSourceMesh = sourceMeshName(withSelectionDefaults({}).warp.mesh);
+    std::string selectionBlendWeights, selectionSourceMesh;  // decimate's defaults, set below
     int selectionErrorWidth = 0;  // 0: the evaluation's
     ErrorArguments errors;
   };
   auto arguments = std::make_shared<Arguments>();
+  const SynthesisOptions selectionDefaults = withSelectionDefaults(TriangleErrorSettings{}.synthesis);
+  arguments->selectionBlendWeights = blendWeightsName(selectionDefaults.blend.weights);
+  arguments->selectionSourceMesh = sourceMeshName(selectionDefaults.warp.mesh);
   CLI::App* command =
       app.add_subcommand("suite", "Measure the selection against the baselines on several scenes and sample counts");
   command->add_option("--spec", arguments->spec, "Suite file (JSON: scenes, capture width, probes, count fractions)")
@@ -280,7 +282,7 @@ void registerSuiteCommand(CLI::App& app) {
           }
           std::printf("== %s: selecting %d of %d samples\n", scene.name.c_str(), count, dataset.sampleCount());
           std::fflush(stdout);
-          if (!selectionErrors) selectionErrors.emplace(dataset, selectionErrorSettings, a.quiet);
+          if (!selectionErrors) selectionErrors.emplace(dataset, selectionErrorSettings, LoadedViews::Samples, a.quiet);
           const SelectionSettings selectionOptions = selectionSettings(a.selection, 0.0, count);
           SelectionRun run = selectReferences(dataset, *selectionErrors, selectionOptions, a.quiet);
           run.selection.settings = describeSelectionSettings(selectionOptions, selectionErrorSettings);
@@ -290,7 +292,7 @@ void registerSuiteCommand(CLI::App& app) {
         }
       }
 
-      DatasetTriangleErrors errors(dataset, settings, a.quiet);
+      DatasetTriangleErrors errors(dataset, settings, LoadedViews::SamplesAndProbes, a.quiet);
       const std::vector<glm::dvec2> positions = samplePositions(dataset);
       const std::vector<double> dense = probeErrors(datasetMesh(dataset, {}, dataset.manifestPath().string()), errors);
       for (size_t f = 0; f < spec.fractions.size(); ++f) {

@@ -50,7 +50,7 @@ void DecimationSession::loadErrors() {
   std::unique_ptr<DatasetTriangleErrors> loaded;
   std::string failure;
   try {
-    loaded = std::make_unique<DatasetTriangleErrors>(dataset_, settings_, true);
+    loaded = std::make_unique<DatasetTriangleErrors>(dataset_, settings_, LoadedViews::Samples, true);
   } catch (const std::exception& error) {
     failure = error.what();
   }

@@ -18,10 +18,12 @@ int errorWidthFor(const Dataset& dataset, int requested) {
   return width;
 }
 
-DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const TriangleErrorSettings& settings, bool quiet)
+DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const TriangleErrorSettings& settings,
+                                             LoadedViews views, bool quiet)
     : dataset_(dataset), settings_(settings), layerCache_(settings.layerCacheBytes) {
   dataset.downsamplingFactor(settings.width, "--error-width");
-  const int samples = dataset.sampleCount(), probes = dataset.probeCount();
+  const int samples = dataset.sampleCount();
+  const int probes = views == LoadedViews::SamplesAndProbes ? dataset.probeCount() : 0;
   sources_.resize(size_t(samples));
   sampleDisplay_.resize(size_t(samples));
   probeDisplay_.resize(size_t(probes));
@@ -45,6 +47,11 @@ DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const Trian
   });
   progress.finish();
   throwIfInterrupted();
+}
+
+const ColorImage& DatasetTriangleErrors::probeDisplay(int probe) const {
+  TRIWALK_CHECK(probe >= 0 && size_t(probe) < probeDisplay_.size(), "probe not loaded (LoadedViews::SamplesAndProbes)");
+  return probeDisplay_[size_t(probe)];
 }
 
 SynthesisOptions withSelectionDefaults(SynthesisOptions synthesis) {

@@ -107,11 +107,16 @@ struct TriangleErrorSettings {
   ErrorOptions error;
 };
 
+// Which views DatasetTriangleErrors loads: a selection reads only the
+// samples; the probes are held out for judging one (eval, the suite's
+// evaluation), and on the main job they are a third of the views to load.
+enum class LoadedViews { Samples, SamplesAndProbes };
+
 class DatasetTriangleErrors final : public TriangleErrorSource, public ReconstructionErrorSource {
 public:
-  // Loads every sample (and probe) at the settings' width, in parallel,
-  // with progress; throws InputError for bad files.
-  DatasetTriangleErrors(const Dataset& dataset, const TriangleErrorSettings& settings, bool quiet);
+  // Loads every sample (and, if asked, every probe) at the settings' width,
+  // in parallel, with progress; throws InputError for bad files.
+  DatasetTriangleErrors(const Dataset& dataset, const TriangleErrorSettings& settings, LoadedViews views, bool quiet);
 
   void computeErrors(std::span<const Triangle> triangles, std::span<double> errors) override;
   void computeReconstructionErrors(std::span<const SampleReconstruction> requests, std::span<double> errors) override;
@@ -130,7 +135,7 @@ public:
   const Dataset& dataset() const { return dataset_; }
   const TriangleErrorSettings& settings() const { return settings_; }
   const ColorImage& sampleDisplay(int sample) const { return sampleDisplay_[size_t(sample)]; }
-  const ColorImage& probeDisplay(int probe) const { return probeDisplay_[size_t(probe)]; }
+  const ColorImage& probeDisplay(int probe) const;  // needs LoadedViews::SamplesAndProbes
   const WarpSource& source(int sample) const { return *sources_[size_t(sample)]; }
   uint64_t evaluations() const { return evaluations_; }
   const WarpLayerCache& layerCache() const { return layerCache_; }

@@ -64,7 +64,7 @@ TEST_CASE("a view's simplified mesh is computed once, kept in the data set, and 
   REQUIRE(fresh.triangleCount() > 0);
 
   SimplifiedMeshStore store(dataset);
-  const std::filesystem::path file = store.file(view, kWidth);
+  const std::filesystem::path file = store.file(view, kWidth, simplifiedOptions().meshTolerancePixels);
   CHECK(file.parent_path().string().starts_with((directory.path() / "meshes").string()));
   requireSameSource(store.source(view, panorama, simplifiedOptions()), fresh, destination);
   CHECK(store.simplified() == 1);
@@ -79,13 +79,20 @@ TEST_CASE("a view's simplified mesh is computed once, kept in the data set, and 
   CHECK(later.simplified() == 0);
   CHECK(std::filesystem::last_write_time(file) == written);
 
-  SUBCASE("another tolerance is simplified again and replaces the file") {
+  SUBCASE("another tolerance is kept in a file of its own, beside the first") {
     const WarpSource coarse(panorama, view.position, degreesToRadians(view.yawDegrees), simplifiedOptions(2.0f));
     REQUIRE(coarse.triangleCount() < fresh.triangleCount());
     requireSameSource(later.source(view, panorama, simplifiedOptions(2.0f)), coarse, destination);
     CHECK(later.simplified() == 1);
+    const std::filesystem::path coarseFile = later.file(view, kWidth, 2.0f);
+    CHECK(coarseFile != file);
+    CHECK(std::filesystem::is_regular_file(coarseFile));
+    // Both read back: runs that alternate the two tolerances never simplify again.
     requireSameSource(later.source(view, panorama, simplifiedOptions(2.0f)), coarse, destination);
-    CHECK(later.loaded() == 2);
+    requireSameSource(later.source(view, panorama, simplifiedOptions()), fresh, destination);
+    CHECK(later.loaded() == 3);
+    CHECK(later.simplified() == 1);
+    CHECK(std::filesystem::last_write_time(file) == written);
   }
   SUBCASE("a changed panorama is simplified again") {
     Panorama moved = panorama;

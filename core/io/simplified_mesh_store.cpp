@@ -5,6 +5,7 @@
 #include "core/support/errors.h"
 
 #include <array>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iostream>
@@ -68,9 +69,16 @@ uint64_t indicesChecksum(const SimplifiedTriangles& triangles) {
 
 SimplifiedMeshStore::SimplifiedMeshStore(const Dataset& dataset) : directory_(dataset.directory() / "meshes") {}
 
-std::filesystem::path SimplifiedMeshStore::file(const ViewRecord& view, int width) const {
+std::filesystem::path SimplifiedMeshStore::file(const ViewRecord& view, int width, float tolerancePixels) const {
   // view.file is a path inside the data set (checked when it was opened).
-  return directory_ / (view.file + "." + std::to_string(width) + ".mesh");
+  // The default tolerance keeps the name stores were first written under.
+  std::string tolerance;
+  if (tolerancePixels != WarpOptions{}.meshTolerancePixels) {
+    char text[32];
+    std::snprintf(text, sizeof text, ".%.2fpx", double(tolerancePixels));
+    tolerance = text;
+  }
+  return directory_ / (view.file + "." + std::to_string(width) + tolerance + ".mesh");
 }
 
 WarpSource SimplifiedMeshStore::source(const ViewRecord& view, const Panorama& panorama, const WarpOptions& options) {
@@ -78,7 +86,7 @@ WarpSource SimplifiedMeshStore::source(const ViewRecord& view, const Panorama& p
   if (options.mesh != SourceMesh::Simplified) {
     return WarpSource(panorama, view.position, yaw, options);
   }
-  const std::filesystem::path path = file(view, panorama.width());
+  const std::filesystem::path path = file(view, panorama.width(), options.meshTolerancePixels);
   const uint64_t key = sourceKey(view, panorama, options);
   const uint32_t vertexCount = uint32_t(panorama.width()) * uint32_t(panorama.height()) + 2;  // pixels and poles
   if (std::optional<SimplifiedTriangles> stored = load(path, key, vertexCount)) {

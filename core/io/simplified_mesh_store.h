@@ -5,7 +5,7 @@
 // preparing it for the GPU, so a walk into new triangles outran the
 // viewer's loader. The triangles depend only on the view (its distances,
 // position, yaw, width) and the warp options, so they are computed once
-// and kept in DATASET/meshes/, one file per view and width, under a key
+// and kept in DATASET/meshes/, one file per view, width and tolerance, under a key
 // of all of these. A file whose key or checksum does not match, or that is
 // malformed, is simplified again and replaced: it is a cache, never input
 // the user must mend. A data set that cannot be written (read-only, full)
@@ -30,8 +30,10 @@ public:
   // for this very source, else they are simplified now and stored.
   WarpSource source(const ViewRecord& view, const Panorama& panorama, const WarpOptions& options);
 
-  // Where view's triangles at this width are kept.
-  std::filesystem::path file(const ViewRecord& view, int width) const;
+  // Where view's triangles at this width and tolerance are kept: one file
+  // per tolerance, so that commands run with different --mesh-tolerance
+  // never replace (and simplify again) each other's.
+  std::filesystem::path file(const ViewRecord& view, int width, float tolerancePixels) const;
 
   // Sources whose triangles were read from the store, and simplified here.
   int loaded() const { return loaded_; }

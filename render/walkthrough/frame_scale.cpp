@@ -24,10 +24,23 @@ FrameScaleController::FrameScaleController(double budgetMilliseconds, float mini
 
 void FrameScaleController::setBudgetMilliseconds(double milliseconds) {
   TRIWALK_CHECK(milliseconds > 0.0, "frame budget must be positive");
+  if (milliseconds != budget_) forgetCeiling();  // a step that did not fit may fit the new budget
   budget_ = milliseconds;
 }
 
 float FrameScaleController::movingScale(float maximum) const { return std::min(scale_, maximum); }
+
+void FrameScaleController::moveTo(float scale, bool upwards) {
+  scale_ = scale;
+  enteredUpwards_ = upwards;
+  fullFrameMilliseconds_ = 0.0;
+  framesAtScale_ = 0;
+}
+
+void FrameScaleController::forgetCeiling() {
+  ceiling_ = kNoCeiling;
+  waitAtCeiling_ = kFramesBeforeProbe;
+}
 
 void FrameScaleController::record(float scale, double milliseconds) {
   if (!(scale > 0.0f) || !std::isfinite(milliseconds) || milliseconds <= 0.0) return;
@@ -35,18 +48,55 @@ void FrameScaleController::record(float scale, double milliseconds) {
   fullFrameMilliseconds_ = fullFrameMilliseconds_ > 0.0
                                ? (1.0 - kNewestWeight) * fullFrameMilliseconds_ + kNewestWeight * fullFrame
                                : fullFrame;
-  const double wanted = std::sqrt(budget_ / fullFrameMilliseconds_);
-  // Whole steps: down at once to the step below the wanted scale (a frame
-  // over budget is what this is for); up only when the wanted scale is half
-  // a step clear of the next one, so that noise near a step's edge does not
-  // flip between two sizes.
+  ++framesAtScale_;
   const auto step = [&](double value) {
     return std::clamp(float(std::floor(value / kScaleStep + 1e-6)) * kScaleStep, minimum_, 1.0f);
   };
+  const double wanted = std::sqrt(budget_ / fullFrameMilliseconds_);
+  // A frame drawn below the current step (the user's render scale caps it)
+  // measures a scale the controller is not at: it cannot try a step up.
+  const bool atStep = std::abs(scale - scale_) < 0.5f * kScaleStep;
+
   if (step(wanted) < scale_) {
-    scale_ = step(wanted);
-  } else if (step(wanted - 0.5 * kScaleStep) > scale_) {
-    scale_ = step(wanted - 0.5 * kScaleStep);
+    // Over budget. A step up on trial is judged on a few frames, not one,
+    // unless the first is far over (a slow stretch, not noise).
+    if (probing_ && atStep && framesAtScale_ < kFramesToJudgeProbe && milliseconds < 1.25 * budget_) return;
+    // A step entered upwards that does not fit (a failed trial, or a kept
+    // one that noise took over budget) is the ceiling: trying it again
+    // waits twice as long, so that a budget between two steps does not flip
+    // the size every few frames. Steps below it are tried at once.
+    if (enteredUpwards_) {
+      ceiling_ = scale_;
+      waitAtCeiling_ = std::min(2 * waitAtCeiling_, kLongestWaitBeforeProbe);
+    }
+    // Down at once to the step below the wanted scale (a frame over budget
+    // is what this is for); with a fixed part the prediction is too low, so
+    // the next frames may step down again. A failed trial goes back one.
+    moveTo(probing_ ? std::max(step(scale_ - 0.5 * kScaleStep), step(wanted)) : step(wanted), false);
+    probing_ = false;
+    return;
+  }
+  if (probing_) {
+    // The step up on trial fits once its frames are enough to judge.
+    if (framesAtScale_ >= kFramesToJudgeProbe) {
+      probing_ = false;
+      if (scale_ > ceiling_ - 0.5f * kScaleStep) ceiling_ = kNoCeiling;
+    }
+    return;
+  }
+  // Up without a trial when even the prediction, pessimistic above the
+  // current scale, says the step is half a step clear of fitting.
+  const float predicted = step(wanted - 0.5 * kScaleStep);
+  if (predicted > scale_) {
+    if (predicted > ceiling_ - 0.5f * kScaleStep) forgetCeiling();
+    moveTo(predicted, true);
+    return;
+  }
+  const float up = step(scale_ + 1.5 * kScaleStep);
+  const int wait = up > ceiling_ - 0.5f * kScaleStep ? waitAtCeiling_ : kFramesBeforeProbe;
+  if (atStep && up > scale_ && framesAtScale_ >= wait) {
+    moveTo(up, true);
+    probing_ = true;
   }
 }
 

@@ -114,10 +114,14 @@ TEST_CASE("SIGTERM stops decimate and eval cleanly, with no partial output") {
   REQUIRE(runTriwalk(directory, "decimate --quiet --target 100 --refine-radius 0" + data + " --out " +
                                     (directory / "small.json").string())
               .status == 0);
-  for (const std::string& arguments : commands) {
+  for (size_t k = 0; k < commands.size(); ++k) {
+    const std::string& arguments = commands[k];
     CAPTURE(arguments);
     const std::filesystem::path status = directory / "status.txt";
-    const std::string log = (directory / "log.txt").string();
+    // A log of its own per command: with one shared file, the wait below
+    // could read the previous command's load line before this one's
+    // redirection emptied the file, and signal it before it started.
+    const std::string log = (directory / ("log-" + std::to_string(k) + ".txt")).string();
     const std::string script = std::string(TRIWALK_BINARY) + " " + arguments + " > " + log +
                                " 2>&1 & pid=$!; for i in $(seq 600); do grep -q \"^load \" " + log +
                                " && break; sleep 0.1; done; kill -TERM $pid; wait $pid; echo $? > " + status.string();

@@ -42,7 +42,7 @@ TEST_CASE("walking frames settle on the largest scale that fits the budget, what
   const double budget = 33.0;
   const float step = FrameScaleController::kScaleStep;
   // The first two have a fixed part that is most of a small frame, as
-  // llvmpipe's vertex work and per-draw overhead are (docs/BENCHMARKS.md):
+  // the setup of the triangles in view is on llvmpipe (docs/BENCHMARKS.md):
   // there a scale's time predicted from another's alone is too high above
   // it, and only trying the step up finds that it fits.
   for (const SimulatedMachine shape : {SimulatedMachine{20.0, 80.0}, SimulatedMachine{19.0, 122.0},
@@ -65,7 +65,7 @@ TEST_CASE("walking frames settle on the largest scale that fits the budget, what
 }
 
 TEST_CASE("a step up that did not fit is tried again less and less often") {
-  // At 0.40 this machine takes 32.2 ms, at 0.45 35.3 ms: every trial fails.
+  // At 0.40 this machine takes 32.2 ms, at 0.45 35.7 ms: every trial fails.
   FrameScaleController controller(33.0, 0.25f);
   SimulatedMachine machine{19.0, 82.5};
   walk(controller, machine, 60);

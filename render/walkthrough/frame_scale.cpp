@@ -37,6 +37,10 @@ void FrameScaleController::moveTo(float scale, bool upwards) {
   framesAtScale_ = 0;
 }
 
+bool FrameScaleController::reachesCeiling(float scale) const {
+  return scale > ceiling_ - 0.5f * kScaleStep;
+}
+
 void FrameScaleController::forgetCeiling() {
   ceiling_ = kNoCeiling;
   waitAtCeiling_ = kFramesBeforeProbe;
@@ -80,7 +84,7 @@ void FrameScaleController::record(float scale, double milliseconds) {
     // The step up on trial fits once its frames are enough to judge.
     if (framesAtScale_ >= kFramesToJudgeProbe) {
       probing_ = false;
-      if (scale_ > ceiling_ - 0.5f * kScaleStep) ceiling_ = kNoCeiling;
+      if (reachesCeiling(scale_)) ceiling_ = kNoCeiling;
     }
     return;
   }
@@ -88,12 +92,12 @@ void FrameScaleController::record(float scale, double milliseconds) {
   // current scale, says the step is half a step clear of fitting.
   const float predicted = step(wanted - 0.5 * kScaleStep);
   if (predicted > scale_) {
-    if (predicted > ceiling_ - 0.5f * kScaleStep) forgetCeiling();
+    if (reachesCeiling(predicted)) forgetCeiling();
     moveTo(predicted, true);
     return;
   }
   const float up = step(scale_ + 1.5 * kScaleStep);
-  const int wait = up > ceiling_ - 0.5f * kScaleStep ? waitAtCeiling_ : kFramesBeforeProbe;
+  const int wait = reachesCeiling(up) ? waitAtCeiling_ : kFramesBeforeProbe;
   if (atStep && up > scale_ && framesAtScale_ >= wait) {
     moveTo(up, true);
     probing_ = true;

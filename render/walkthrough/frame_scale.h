@@ -5,7 +5,7 @@
 // one frame at full resolution and keeps it on screen until something
 // changes (app/viewer/viewer_app.cpp).
 //
-// The warp's time is a fixed part (vertex work, per-draw overhead) plus a
+// The warp's time is a fixed part (the setup of the triangles in view) plus a
 // part proportional to the pixels: t = a + b s^2 for the linear scale s.
 // The controller keeps a running mean of t / s^2 at the current scale, the
 // cost of a full frame as if all of it scaled, and predicts another scale's
@@ -62,16 +62,18 @@ private:
   static constexpr float kNoCeiling = 2.0f;
 
   void moveTo(float scale, bool upwards);
+  // Whether a step is the ceiling or above it (steps compared to half a step).
+  bool reachesCeiling(float scale) const;
   void forgetCeiling();
 
   double budget_;
   float minimum_;
-  float scale_ = 1.0f;                  // the current step
-  bool enteredUpwards_ = false;         // the current step was reached by going up
-  bool probing_ = false;                // the current step is a step up on trial
-  double fullFrameMilliseconds_ = 0.0;  // running mean of t / s^2 at the current step; 0 before its first frame
-  int framesAtScale_ = 0;               // frames recorded at the current step
-  float ceiling_ = kNoCeiling;          // the lowest step entered upwards that then did not fit
+  float scale_ = 1.0f;                      // the current step
+  bool enteredUpwards_ = false;             // the current step was reached by going up
+  bool probing_ = false;                    // the current step is a step up on trial
+  double fullFrameMilliseconds_ = 0.0;      // running mean of t / s^2 at the current step; 0 before its first frame
+  int framesAtScale_ = 0;                   // frames recorded at the current step
+  float ceiling_ = kNoCeiling;              // the lowest step entered upwards that then did not fit
   int waitAtCeiling_ = kFramesBeforeProbe;  // frames that fit before the ceiling is tried again
 };
 

@@ -23,14 +23,19 @@ void registerBenchCommand(CLI::App& app) {
   };
   auto arguments = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand("bench", "Measure throughput and print a table (machine, sizes, figures)");
-  command->add_option("--only", arguments->only, "Run only these groups: capture, region, decimate, warp, render, viewer")
+  command
+      ->add_option("--only", arguments->only,
+                   "Run only these groups: capture, region, decimate, scaling, warp, render, viewer (scaling: not in "
+                   "the default run)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"capture", "region", "decimate", "warp", "render", "viewer"}));
+      ->check(CLI::IsMember({"capture", "region", "decimate", "scaling", "warp", "render", "viewer"}));
   command->add_option("--gl", arguments->gl, "Headless OpenGL: auto, egl or osmesa")->capture_default_str();
   command->add_option("--capture-views", arguments->captureViews, "Panoramas rendered for the capture figure")
-      ->capture_default_str()->check(positiveNumber());
+      ->capture_default_str()
+      ->check(positiveNumber());
   command->add_option("--decimation-width", arguments->decimationWidth, "Panorama width decimation works at")
-      ->capture_default_str()->check(CLI::IsMember({64, 128, 256, 512, 1024}));
+      ->capture_default_str()
+      ->check(CLI::IsMember({64, 128, 256, 512, 1024}));
   command->add_option("--dataset", arguments->dataset,
                       "Data set for the decimation figures (default: capture the default one first)");
   command->add_option("--selection", arguments->selection, "Selection for the viewer figure (default: all samples)");
@@ -49,13 +54,19 @@ void registerBenchCommand(CLI::App& app) {
     if (selected("decimate")) {
       benchDecimate(table, loadSceneDescription(builtinScenePath()), arguments->dataset, arguments->decimationWidth);
     }
+    // Two captures and decimations, about half an hour here: only when asked.
+    if (only.count("scaling")) {
+      benchScaling(table, loadSceneDescription(builtinScenePath()), arguments->decimationWidth);
+    }
     if (selected("warp") || selected("render")) {
       const BenchViews views = captureBenchViews();
       if (selected("warp")) benchWarp(table, views, arguments->decimationWidth);
       if (selected("render")) benchRender(table, views, 60);
     }
     if (selected("viewer")) {
-      if (arguments->dataset.empty()) throw InputError("--dataset", "the viewer figure walks through a data set: give --dataset");
+      if (arguments->dataset.empty()) {
+        throw InputError("--dataset", "the viewer figure walks through a data set: give --dataset");
+      }
       const Dataset dataset = Dataset::open(arguments->dataset);
       benchViewer(table, dataset, arguments->selection, 300);
     }

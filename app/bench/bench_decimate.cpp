@@ -5,18 +5,58 @@
 #include <sys/resource.h>
 
 #include <filesystem>
+#include <fstream>
+#include <string>
 
 namespace triwalk {
 
 namespace {
 
+// The kernel's high-water mark of resident memory (VmHWM), reset so that
+// each decimation of one bench run reports its own peak; false when it
+// cannot be reset (the peak then includes what ran before).
+bool resetPeakResident() {
+  std::ofstream clear("/proc/self/clear_refs");
+  clear << "5";
+  clear.flush();
+  return bool(clear);
+}
+
 double peakResidentGigabytes() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmHWM:", 0) == 0) return double(std::stoull(line.substr(6))) / (1024.0 * 1024.0);  // kB
+  }
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return double(usage.ru_maxrss) / (1024.0 * 1024.0);  // ru_maxrss is in KiB on Linux
 }
 
 }  // namespace
+
+BenchDecimation runBenchDecimation(const Dataset& dataset, int errorWidth) {
+  BenchDecimation result;
+  result.peakIsOwn = resetPeakResident();
+  TriangleErrorSettings settings;
+  settings.width = errorWidth;
+  settings.synthesis = withSelectionDefaults(settings.synthesis);  // as decimate prices collapses
+  const auto loadStart = BenchClock::now();
+  // Progress on stderr (minutes of work); the table goes to stdout.
+  constexpr bool kQuiet = false;
+  DatasetTriangleErrors errors(dataset, settings, LoadedViews::Samples, kQuiet);
+  result.loadSeconds = secondsSince(loadStart);
+  // What `decimate --max-error 1.85` (the main job) runs: the default
+  // cost, boundary and area weights, then the refinement.
+  SelectionSettings selection;
+  selection.decimation.maxError = 1.85;
+  result.run = selectReferences(dataset, errors, selection, kQuiet);
+  result.peakGigabytes = peakResidentGigabytes();
+  result.layersComputed = errors.layerCache().misses();
+  result.layersReused = errors.layerCache().hits();
+  result.layerBudgetGigabytes = double(errors.layerCache().budgetBytes()) / double(1u << 30);
+  return result;
+}
 
 void benchDecimate(BenchTable& table, const Scene& scene, const std::string& datasetDirectory, int errorWidth) {
   std::filesystem::path directory = datasetDirectory;
@@ -28,30 +68,19 @@ void benchDecimate(BenchTable& table, const Scene& scene, const std::string& dat
     captureDataset(scene, "builtin", options, directory);
   }
   const Dataset dataset = Dataset::open(directory);
-  const std::string size = std::to_string(dataset.sampleCount()) + " samples " + std::to_string(dataset.manifest().width) +
-                           "x" + std::to_string(dataset.manifest().height) + ", errors at " + std::to_string(errorWidth) +
-                           "x" + std::to_string(errorWidth / 2);
-  TriangleErrorSettings settings;
-  settings.width = errorWidth;
-  settings.synthesis = withSelectionDefaults(settings.synthesis);  // as decimate prices collapses
-  const auto loadStart = BenchClock::now();
-  // Progress on stderr (minutes of work); the table goes to stdout.
-  constexpr bool kQuiet = false;
-  DatasetTriangleErrors errors(dataset, settings, LoadedViews::Samples, kQuiet);
-  const double loadSeconds = secondsSince(loadStart);
-  // What `decimate --max-error 1.85` (the main job) runs: the default
-  // cost, boundary and area weights, then the refinement.
-  SelectionSettings selection;
-  selection.decimation.maxError = 1.85;
-  const SelectionRun run = selectReferences(dataset, errors, selection, kQuiet);
+  const std::string size = std::to_string(dataset.sampleCount()) + " samples " +
+                           std::to_string(dataset.manifest().width) + "x" + std::to_string(dataset.manifest().height) +
+                           ", errors at " + std::to_string(errorWidth) + "x" + std::to_string(errorWidth / 2);
+  const BenchDecimation decimation = runBenchDecimation(dataset, errorWidth);
+  const SelectionRun& run = decimation.run;
   const DecimationStatistics& statistics = run.statistics;
   const RefinementResult& refinement = run.refinement;
-  const std::string cost = collapseCostName(selection.decimation.cost);
+  const std::string cost = collapseCostName(SelectionSettings{}.decimation.cost);
   table.add({"decimation wall time (edge collapse, " + cost + " cost, to the threshold 1.85)", size,
              formatNumber(run.collapseSeconds, 1) + " s",
              "initial edge costs " + formatNumber(run.costingSeconds, 1) + " s, " + std::to_string(run.collapses) +
                  " collapses to " + std::to_string(run.initialSamples - int(run.collapses)) +
-                 " samples; loading the panoramas " + formatNumber(loadSeconds, 1) + " s more"});
+                 " samples; loading the panoramas " + formatNumber(decimation.loadSeconds, 1) + " s more"});
   // The viewer's live decimation runs the same decimator, one collapse at
   // a time after the initial costing.
   const double collapsing = run.collapseSeconds - run.costingSeconds;
@@ -59,15 +88,17 @@ void benchDecimate(BenchTable& table, const Scene& scene, const std::string& dat
              formatNumber(collapsing > 0.0 ? double(run.collapses) / collapsing : 0.0, 1) + " collapses/s",
              std::to_string(run.collapses) + " collapses in " + formatNumber(collapsing, 1) +
                  " s, from the dense mesh down to the threshold"});
-  table.add({"decimation peak memory (with refinement)", size, formatNumber(peakResidentGigabytes(), 2) + " GiB",
-             "process peak RSS (the capture before it needs far less): panoramas at the error width plus the "
-             "warped-layer cache (" + formatNumber(double(errors.layerCache().budgetBytes()) / double(1u << 30), 1) +
-                 " GiB budget)"});
-  table.add({"decimation errors computed vs served from the cache", size,
-             std::to_string(statistics.errorsComputed) + " computed, " + std::to_string(statistics.cacheHits) + " cached",
-             "errors of dense samples (" + cost + " cost); warped layers computed " +
-                 std::to_string(errors.layerCache().misses()) + ", reused " + std::to_string(errors.layerCache().hits()) +
-                 "; stale heap entries skipped " + std::to_string(statistics.staleEntriesSkipped)});
+  table.add({"decimation peak memory (with refinement)", size, formatNumber(decimation.peakGigabytes, 2) + " GiB",
+             std::string(decimation.peakIsOwn ? "peak RSS from the load on" : "process peak RSS") +
+                 " (the capture before it needs far less): panoramas at the error width plus the "
+                 "warped-layer cache (" +
+                 formatNumber(decimation.layerBudgetGigabytes, 1) + " GiB budget)"});
+  table.add(
+      {"decimation errors computed vs served from the cache", size,
+       std::to_string(statistics.errorsComputed) + " computed, " + std::to_string(statistics.cacheHits) + " cached",
+       "errors of dense samples (" + cost + " cost); warped layers computed " +
+           std::to_string(decimation.layersComputed) + ", reused " + std::to_string(decimation.layersReused) +
+           "; stale heap entries skipped " + std::to_string(statistics.staleEntriesSkipped)});
   table.add({"refinement wall time (references moved at the final count)", size,
              formatNumber(run.refinementSeconds, 1) + " s",
              std::to_string(refinement.moves.size()) + " moves (" + std::to_string(refinement.exchanges) +

@@ -5,6 +5,7 @@
 #include "app/bench/bench_table.h"
 #include "core/image/image.h"
 #include "core/io/dataset.h"
+#include "core/selection/reference_selection.h"
 #include "render/scene/scene.h"
 
 #include <chrono>
@@ -34,6 +35,22 @@ void benchViewer(BenchTable& table, const Dataset& dataset, const std::string& s
 void benchRegion(BenchTable& table, const std::filesystem::path& scenePath);
 // datasetDirectory empty: captures the default data set first.
 void benchDecimate(BenchTable& table, const Scene& scene, const std::string& datasetDirectory, int errorWidth);
+// The decimation of the default capture's lattice and of one with 4x the
+// samples over the same area, both captured at the error width: time and
+// peak memory of each, and their ratios (issue 15's scaling row).
+void benchScaling(BenchTable& table, const Scene& scene, int errorWidth);
+
+// One decimation as the main job runs it (`decimate --max-error 1.85`):
+// the panoramas loaded at the error width, the collapses, the refinement.
+struct BenchDecimation {
+  SelectionRun run;
+  double loadSeconds = 0.0;
+  double peakGigabytes = 0.0;  // resident, from the start of the load
+  bool peakIsOwn = true;       // false: the kernel kept the process's earlier peak
+  uint64_t layersComputed = 0, layersReused = 0;
+  double layerBudgetGigabytes = 0.0;
+};
+BenchDecimation runBenchDecimation(const Dataset& dataset, int errorWidth);
 
 using BenchClock = std::chrono::steady_clock;
 inline double secondsSince(BenchClock::time_point start) {

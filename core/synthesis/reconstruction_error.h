@@ -45,7 +45,12 @@ public:
   // holes). Inline: every pixel of every reconstruction comes through here.
   float add(int y, glm::vec3 reconstruction, bool hole, glm::vec3 truth) {
     // Per pixel in float (display values in [0, 1]); rows sum in double.
-    const glm::vec3 difference = glm::abs((hole ? glm::vec3(0.0f) : reconstruction) - truth);
+    // std::abs clears the sign bit; glm::abs compares and branches, and the
+    // differences' signs are random, so it mispredicted: a quarter of a
+    // cached-layer error's time (docs/BENCHMARKS.md). The same values.
+    const glm::vec3 signedDifference = (hole ? glm::vec3(0.0f) : reconstruction) - truth;
+    const glm::vec3 difference(std::abs(signedDifference.r), std::abs(signedDifference.g),
+                               std::abs(signedDifference.b));
     const float squared = glm::dot(difference, difference);
     const float largest = std::max(difference.r, std::max(difference.g, difference.b));
     rowSquared_[size_t(y)] += double(squared);

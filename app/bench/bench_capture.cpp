@@ -1,4 +1,5 @@
 #include "app/bench/bench_groups.h"
+#include "app/bench/temporary_capture.h"
 #include "core/io/exr_io.h"
 #include "render/capture/dataset_capture.h"
 #include "render/capture/panorama_capturer.h"
@@ -30,9 +31,7 @@ void benchCapture(BenchTable& table, const Scene& scene, int width, int count) {
   options.paths = count / 4;
   options.perPath = 4;
   options.quiet = true;
-  const std::filesystem::path directory = std::filesystem::temp_directory_path() / "triwalk-bench-capture";
-  const CaptureSummary summary = captureDataset(scene, "builtin", options, directory);
-  std::filesystem::remove_all(directory);
+  const CaptureSummary summary = TemporaryCapture(scene, options, "triwalk-bench-capture").summary();
   table.add({"capture throughput (render + read-back + OpenEXR write)",
              panoramaSize + ", " + sceneSize + ", " + std::to_string(summary.samples) + " views",
              formatNumber(summary.samples / summary.seconds, 2) + " panoramas/s",

@@ -1,11 +1,12 @@
 #include "app/bench/bench_groups.h"
+#include "app/bench/temporary_capture.h"
 #include "core/selection/reference_selection.h"
-#include "render/capture/dataset_capture.h"
 
 #include <sys/resource.h>
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 
 namespace triwalk {
@@ -59,13 +60,13 @@ BenchDecimation runBenchDecimation(const Dataset& dataset, int errorWidth) {
 }
 
 void benchDecimate(BenchTable& table, const Scene& scene, const std::string& datasetDirectory, int errorWidth) {
+  std::optional<TemporaryCapture> capture;
   std::filesystem::path directory = datasetDirectory;
-  const bool captured = directory.empty();
-  if (captured) {
-    directory = std::filesystem::temp_directory_path() / "triwalk-bench-dataset";
+  if (directory.empty()) {
     CaptureOptions options;  // the default capture: 30 paths x 15 samples at 1024x512
     options.probes = 0;
-    captureDataset(scene, "builtin", options, directory);
+    capture.emplace(scene, options, "triwalk-bench-dataset");
+    directory = capture->directory();
   }
   const Dataset dataset = Dataset::open(directory);
   const std::string size = std::to_string(dataset.sampleCount()) + " samples " +
@@ -106,7 +107,6 @@ void benchDecimate(BenchTable& table, const Scene& scene, const std::string& dat
                  " passes of local moves; dense-sample errors computed " + std::to_string(refinement.errorsComputed) +
                  ", cached " + std::to_string(refinement.cacheHits) + "; mean error " +
                  formatNumber(refinement.objectiveBefore, 4) + " -> " + formatNumber(refinement.objectiveAfter, 4)});
-  if (captured) std::filesystem::remove_all(directory);
 }
 
 }  // namespace triwalk

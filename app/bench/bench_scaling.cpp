@@ -1,35 +1,9 @@
 #include "app/bench/bench_groups.h"
-#include "render/capture/dataset_capture.h"
-
-#include <filesystem>
+#include "app/bench/temporary_capture.h"
 
 namespace triwalk {
 
 namespace {
-
-// A captured data set in the temporary folder, removed when the bench is
-// done with it, also when it stops on an error or Ctrl-C.
-class TemporaryCapture {
-public:
-  TemporaryCapture(const Scene& scene, const CaptureOptions& options, const std::string& name)
-      : directory_(std::filesystem::temp_directory_path() / name) {
-    std::filesystem::remove_all(directory_);  // a run stopped before could not remove it
-    summary_ = captureDataset(scene, "builtin", options, directory_);
-  }
-  ~TemporaryCapture() {
-    std::error_code ignored;
-    std::filesystem::remove_all(directory_, ignored);
-  }
-  TemporaryCapture(const TemporaryCapture&) = delete;
-  TemporaryCapture& operator=(const TemporaryCapture&) = delete;
-
-  const std::filesystem::path& directory() const { return directory_; }
-  const CaptureSummary& summary() const { return summary_; }
-
-private:
-  std::filesystem::path directory_;
-  CaptureSummary summary_;
-};
 
 struct ScalingRun {
   int samples = 0;

@@ -70,6 +70,7 @@ TEST_CASE("bad options fail in one line naming the option, before any work, and 
       {"capture --out " + (directory / "new").string() + " --spacing nan", "--spacing: must be a finite number, got nan"},
       {"capture --out " + (directory / "new").string() + " --area 0,0,nan,1", "--area: must be a finite number"},
       {"eval" + data + " --selection " + selection + " --json /nonexistent/rows.json", "--json: cannot write"},
+      {"bench --only capture --capture-views 4", "--capture-views: Value 4 not in range 8 to 100000"},
   };
   for (const Case& c : cases) {
     CAPTURE(c.arguments);

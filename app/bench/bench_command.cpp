@@ -30,9 +30,12 @@ void registerBenchCommand(CLI::App& app) {
       ->delimiter(',')
       ->check(CLI::IsMember({"capture", "region", "decimate", "scaling", "warp", "render", "viewer"}));
   command->add_option("--gl", arguments->gl, "Headless OpenGL: auto, egl or osmesa")->capture_default_str();
-  command->add_option("--capture-views", arguments->captureViews, "Panoramas rendered for the capture figure")
+  // The end-to-end figure captures views / 4 paths of 4, and a capture needs at least 2 paths.
+  command
+      ->add_option("--capture-views", arguments->captureViews,
+                   "Panoramas rendered for the capture figure (at least 8: the end-to-end figure captures paths of 4)")
       ->capture_default_str()
-      ->check(positiveNumber());
+      ->check(CLI::Range(8, 100000));
   command->add_option("--decimation-width", arguments->decimationWidth, "Panorama width decimation works at")
       ->capture_default_str()
       ->check(CLI::IsMember({64, 128, 256, 512, 1024}));

@@ -49,9 +49,8 @@ BenchDecimation runBenchDecimation(const Dataset& dataset, int errorWidth) {
   result.loadSeconds = secondsSince(loadStart);
   // What `decimate --max-error 1.85` (the main job) runs: the default
   // cost, boundary and area weights, then the refinement.
-  SelectionSettings selection;
-  selection.decimation.maxError = 1.85;
-  result.run = selectReferences(dataset, errors, selection, kQuiet);
+  result.settings.decimation.maxError = 1.85;
+  result.run = selectReferences(dataset, errors, result.settings, kQuiet);
   result.peakGigabytes = peakResidentGigabytes();
   result.layersComputed = errors.layerCache().misses();
   result.layersReused = errors.layerCache().hits();
@@ -76,8 +75,10 @@ void benchDecimate(BenchTable& table, const Scene& scene, const std::string& dat
   const SelectionRun& run = decimation.run;
   const DecimationStatistics& statistics = run.statistics;
   const RefinementResult& refinement = run.refinement;
-  const std::string cost = collapseCostName(SelectionSettings{}.decimation.cost);
-  table.add({"decimation wall time (edge collapse, " + cost + " cost, to the threshold 1.85)", size,
+  const std::string cost = collapseCostName(decimation.settings.decimation.cost);
+  table.add({"decimation wall time (edge collapse, " + cost + " cost, to the threshold " +
+                 formatNumber(decimation.settings.decimation.maxError, 2) + ")",
+             size,
              formatNumber(run.collapseSeconds, 1) + " s",
              "initial edge costs " + formatNumber(run.costingSeconds, 1) + " s, " + std::to_string(run.collapses) +
                  " collapses to " + std::to_string(run.initialSamples - int(run.collapses)) +

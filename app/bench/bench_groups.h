@@ -43,6 +43,7 @@ void benchScaling(BenchTable& table, const Scene& scene, int errorWidth);
 // One decimation as the main job runs it (`decimate --max-error 1.85`):
 // the panoramas loaded at the error width, the collapses, the refinement.
 struct BenchDecimation {
+  SelectionSettings settings;  // what the run selected with
   SelectionRun run;
   double loadSeconds = 0.0;
   double peakGigabytes = 0.0;  // resident, from the start of the load

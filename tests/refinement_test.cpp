@@ -615,6 +615,49 @@ TEST_CASE("Ctrl-C stops the exchange search between chunks of its errors, not af
   CHECK(stopping.computed < kStopAfter + 64);
 }
 
+namespace {
+
+// A small captured data set decimated to 5 samples and refined, as the
+// selection runs it, with the thread count given.
+struct DecimatedAndRefined {
+  std::vector<Collapse> log;  // the collapses, then the moves
+  RefinementResult refinement;
+  uint64_t layersWarped = 0;
+};
+
+DecimatedAndRefined decimateAndRefine(const Dataset& dataset, const TriangleErrorSettings& settings, int threads) {
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+  const std::vector<glm::dvec2> positions = samplePositions(dataset);
+  const ViewMesh initial = ViewMesh::delaunay(positions, {}, "test");
+  DatasetTriangleErrors errors(dataset, settings, LoadedViews::Samples, true);
+  DecimationOptions options;  // the default cost (served samples), with the paper's fixed boundary so that
+  options.maxError = 0.0;     // the refinement has references on the boundary to move
+  options.targetSamples = 5;
+  options.fixedBoundary = true;
+  options.pricedSamples = 2;  // so that pricing subsets have work here, in the collapses and the refinement
+  EdgeCollapseDecimator decimator(initial, DecimationErrors{&errors, &errors}, options);
+  decimator.run();
+  DecimatedAndRefined result;
+  result.refinement = refineSelection(positions, decimator.mesh().triangles(), errors, {10.0, 8, {}, nullptr, {}, 0.0, 2});
+  result.log = decimator.log();
+  result.log.insert(result.log.end(), result.refinement.moves.begin(), result.refinement.moves.end());
+  result.layersWarped = errors.layerCache().misses();
+  return result;
+}
+
+void checkSameSelection(const DecimatedAndRefined& a, const DecimatedAndRefined& b) {
+  REQUIRE(a.log.size() == b.log.size());
+  for (size_t i = 0; i < a.log.size(); ++i) {
+    CHECK(a.log[i].kind == b.log[i].kind);
+    CHECK(a.log[i].placement == b.log[i].placement);
+    CHECK(a.log[i].cost == b.log[i].cost);
+    CHECK(a.log[i].added == b.log[i].added);
+  }
+  CHECK(a.refinement.triangles == b.refinement.triangles);
+}
+
+}  // namespace
+
 TEST_CASE(
     "a captured data set: decimation then refinement, the same with 1 and 2 threads (grid and simplified source "
     "meshes), and through selection.json") {
@@ -625,40 +668,18 @@ TEST_CASE(
   const ViewMesh initial = ViewMesh::delaunay(positions, {}, "test");
   TriangleErrorSettings settings;
   settings.width = 64;
-  auto run = [&](int threads, SourceMesh mesh) {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-    settings.synthesis.warp.mesh = mesh;
-    DatasetTriangleErrors errors(dataset, settings, LoadedViews::Samples, true);
-    DecimationOptions options;  // the default cost (served samples), with the paper's fixed boundary so that
-    options.maxError = 0.0;     // the refinement has references on the boundary to move
-    options.targetSamples = 5;
-    options.fixedBoundary = true;
-    options.pricedSamples = 2;  // so that pricing subsets have work here, in the collapses and the refinement
-    EdgeCollapseDecimator decimator(initial, DecimationErrors{&errors, &errors}, options);
-    decimator.run();
-    const ViewMesh decimated = decimator.mesh();
-    RefinementResult refinement =
-        refineSelection(positions, decimated.triangles(), errors, {10.0, 8, {}, nullptr, {}, 0.0, 2});
-    std::vector<Collapse> log = decimator.log();
-    log.insert(log.end(), refinement.moves.begin(), refinement.moves.end());
-    return std::pair(log, refinement);
-  };
   std::vector<Collapse> one;  // the grid's, for the selection file below
   RefinementResult refinedOne;
   for (const SourceMesh mesh : {SourceMesh::Simplified, SourceMesh::Grid}) {
     INFO(sourceMeshName(mesh) << " source mesh");
-    std::tie(one, refinedOne) = run(1, mesh);
-    const auto [two, refinedTwo] = run(2, mesh);
+    settings.synthesis.warp.mesh = mesh;
+    const DecimatedAndRefined first = decimateAndRefine(dataset, settings, 1);
+    const DecimatedAndRefined second = decimateAndRefine(dataset, settings, 2);
+    one = first.log;
+    refinedOne = first.refinement;
     REQUIRE(!refinedOne.moves.empty());
     REQUIRE(one.size() == 10 + refinedOne.moves.size());  // 15 samples collapsed to 5, then the moves
-    REQUIRE(two.size() == one.size());
-    for (size_t i = 0; i < one.size(); ++i) {
-      CHECK(one[i].kind == two[i].kind);
-      CHECK(one[i].placement == two[i].placement);
-      CHECK(one[i].cost == two[i].cost);
-      CHECK(one[i].added == two[i].added);
-    }
-    CHECK(refinedOne.triangles == refinedTwo.triangles);
+    checkSameSelection(first, second);
     CHECK(refinedOne.objectiveAfter <= refinedOne.objectiveBefore);
   }
 
@@ -680,6 +701,20 @@ TEST_CASE(
   }
   CHECK(loaded.triangles == refinedOne.triangles);
   CHECK(samplesAfter(initial.vertexCount(), loaded.collapses, loaded.collapses.size()) == 5);
+}
+
+TEST_CASE("the warped-layer cache's budget changes how many layers are warped, never the selection") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 5, 3, 64, 1);
+  const Dataset dataset = Dataset::open(directory / "data");
+  TriangleErrorSettings settings;
+  settings.width = 64;
+  const DecimatedAndRefined automatic = decimateAndRefine(dataset, settings, 2);
+  settings.layerCacheBytes = 1;  // one layer kept: nearly every request warps again
+  const DecimatedAndRefined starved = decimateAndRefine(dataset, settings, 2);
+  checkSameSelection(automatic, starved);
+  CHECK(starved.layersWarped > 2 * automatic.layersWarped);
+  CHECK(automaticLayerCacheBytes() >= size_t(1) << 30);
 }
 
 }  // namespace triwalk

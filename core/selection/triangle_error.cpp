@@ -20,7 +20,7 @@ int errorWidthFor(const Dataset& dataset, int requested) {
 
 DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const TriangleErrorSettings& settings,
                                              LoadedViews views, bool quiet)
-    : dataset_(dataset), settings_(settings), layerCache_(settings.layerCacheBytes) {
+    : dataset_(dataset), settings_(settings), layerCache_(settings.layerCacheBytes.value_or(0)) {
   dataset.downsamplingFactor(settings.width, "--error-width");
   const int samples = dataset.sampleCount();
   const int probes = views == LoadedViews::SamplesAndProbes ? dataset.probeCount() : 0;
@@ -47,6 +47,7 @@ DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const Trian
   });
   progress.finish();
   throwIfInterrupted();
+  if (!settings.layerCacheBytes) layerCache_.setBudgetBytes(automaticLayerCacheBytes());
 }
 
 const ColorImage& DatasetTriangleErrors::probeDisplay(int probe) const {

@@ -19,6 +19,7 @@
 #include <map>
 #include <mutex>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -101,7 +102,9 @@ SynthesisOptions withSelectionDefaults(SynthesisOptions synthesis);
 
 struct TriangleErrorSettings {
   int width = kDefaultErrorWidth;  // panorama width the errors are computed at
-  size_t layerCacheBytes = defaultLayerCacheBytes();  // warped layers kept for reuse
+  // Warped layers kept for reuse; none: automaticLayerCacheBytes() once
+  // the views are loaded, so that it counts what they took.
+  std::optional<size_t> layerCacheBytes;
   TriangleDestinations destinations = TriangleDestinations::Centroid;
   SynthesisOptions synthesis{.warp = {}, .blend = {}, .holes = kDefaultErrorHoles};
   ErrorOptions error;

@@ -3,7 +3,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <fstream>
 #include <limits>
+#include <optional>
+#include <sstream>
+#include <string>
 
 namespace triwalk {
 
@@ -25,6 +29,25 @@ size_t WarpLayerCache::bytes() const {
   return bytes_;
 }
 
+size_t WarpLayerCache::budgetBytes() const {
+  std::lock_guard lock(mutex_);
+  return budgetBytes_;
+}
+
+void WarpLayerCache::setBudgetBytes(size_t budgetBytes) {
+  std::lock_guard lock(mutex_);
+  budgetBytes_ = budgetBytes;
+  evictOverBudget();
+}
+
+void WarpLayerCache::evictOverBudget() {
+  while (bytes_ > budgetBytes_ && recency_.size() > 1) {
+    bytes_ -= recency_.back().second->bytes();
+    index_.erase(recency_.back().first);
+    recency_.pop_back();
+  }
+}
+
 std::shared_ptr<const CompactLayer> WarpLayerCache::get(int source, int destination, const std::function<WarpLayer()>& make) {
   const Key key = (uint64_t(uint32_t(source)) << 32) | uint32_t(destination);
   {
@@ -44,18 +67,33 @@ std::shared_ptr<const CompactLayer> WarpLayerCache::get(int source, int destinat
   recency_.emplace_front(key, layer);
   index_[key] = recency_.begin();
   bytes_ += layer->bytes();
-  while (bytes_ > budgetBytes_ && recency_.size() > 1) {
-    bytes_ -= recency_.back().second->bytes();
-    index_.erase(recency_.back().first);
-    recency_.pop_back();
-  }
+  evictOverBudget();
   return layer;
 }
 
-size_t defaultLayerCacheBytes() {
+namespace {
+
+// MemAvailable from /proc/meminfo (the kernel's estimate of what can be
+// allocated without swapping), or nothing where there is none.
+std::optional<size_t> availableMemoryBytes() {
+  std::ifstream meminfo("/proc/meminfo");
+  std::string line;
+  while (std::getline(meminfo, line)) {
+    if (line.rfind("MemAvailable:", 0) != 0) continue;
+    std::istringstream fields(line.substr(13));
+    size_t kibibytes = 0;
+    if (fields >> kibibytes) return kibibytes * size_t(1024);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+size_t automaticLayerCacheBytes() {
   const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGE_SIZE);
   const size_t physical = pages > 0 && pageSize > 0 ? size_t(pages) * size_t(pageSize) : size_t(4) << 30;
-  return std::clamp(physical / 3, size_t(1) << 30, size_t(16) << 30);
+  const size_t available = availableMemoryBytes().value_or(physical / 2);
+  return std::max(std::min(available / 4 * 3, physical / 10 * 6), size_t(1) << 30);
 }
 
 }  // namespace triwalk

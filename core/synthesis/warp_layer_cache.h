@@ -53,11 +53,15 @@ public:
   uint64_t hits() const { return hits_; }
   uint64_t misses() const { return misses_; }
   size_t bytes() const;
-  size_t budgetBytes() const { return budgetBytes_; }
+  size_t budgetBytes() const;
+  // Evicts least recently used layers down to a new budget if it is lower.
+  void setBudgetBytes(size_t budgetBytes);
 
 private:
   using Key = uint64_t;
   using Entry = std::pair<Key, std::shared_ptr<const CompactLayer>>;
+
+  void evictOverBudget();  // with the lock held
 
   size_t budgetBytes_;
   size_t bytes_ = 0;
@@ -67,8 +71,12 @@ private:
   uint64_t hits_ = 0, misses_ = 0;
 };
 
-// A budget for the cache from the machine's memory: a third of it, at
-// least 1 GiB and at most 16 GiB.
-size_t defaultLayerCacheBytes();
+// A budget for the cache from the memory left once the views are loaded:
+// three quarters of what the kernel reports available, at most 60% of the
+// machine's memory, at least 1 GiB. A denser capture needs more layers
+// again later than a fixed third of the memory held (docs/BENCHMARKS.md,
+// "the warped-layer cache sized by the memory left"); a layer never needed
+// again costs memory only.
+size_t automaticLayerCacheBytes();
 
 }  // namespace triwalk

@@ -54,6 +54,7 @@ BenchDecimation runBenchDecimation(const Dataset& dataset, int errorWidth) {
   result.peakGigabytes = peakResidentGigabytes();
   result.layersComputed = errors.layerCache().misses();
   result.layersReused = errors.layerCache().hits();
+  result.layersWarpedAgain = errors.layerCache().missesAfterEviction();
   result.layerBudgetGigabytes = double(errors.layerCache().budgetBytes()) / double(1u << 30);
   return result;
 }
@@ -99,7 +100,8 @@ void benchDecimate(BenchTable& table, const Scene& scene, const std::string& dat
       {"decimation errors computed vs served from the cache", size,
        std::to_string(statistics.errorsComputed) + " computed, " + std::to_string(statistics.cacheHits) + " cached",
        "errors of dense samples (" + cost + " cost); warped layers computed " +
-           std::to_string(decimation.layersComputed) + ", reused " + std::to_string(decimation.layersReused) +
+           std::to_string(decimation.layersComputed) + " (" + std::to_string(decimation.layersWarpedAgain) +
+           " of them again, dropped for the budget), reused " + std::to_string(decimation.layersReused) +
            "; stale heap entries skipped " + std::to_string(statistics.staleEntriesSkipped)});
   table.add({"refinement wall time (references moved at the final count)", size,
              formatNumber(run.refinementSeconds, 1) + " s",

@@ -49,6 +49,7 @@ struct BenchDecimation {
   double peakGigabytes = 0.0;  // resident, from the start of the load
   bool peakIsOwn = true;       // false: the kernel kept the process's earlier peak
   uint64_t layersComputed = 0, layersReused = 0;
+  uint64_t layersWarpedAgain = 0;  // of layersComputed, those the cache had dropped for its budget
   double layerBudgetGigabytes = 0.0;
 };
 BenchDecimation runBenchDecimation(const Dataset& dataset, int errorWidth);

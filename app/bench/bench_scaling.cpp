@@ -44,7 +44,10 @@ void benchScaling(BenchTable& table, const Scene& scene, int errorWidth) {
     table.add({"decimation, " + std::to_string(scaling.samples) + " samples: collapses / refinement",
                std::to_string(scaling.samples) + " samples " + widthText + ", errors at " + widthText,
                formatNumber(run.collapseSeconds, 1) + " s / " + formatNumber(run.refinementSeconds, 1) + " s",
-               "peak " + formatNumber(scaling.decimation.peakGigabytes, 2) + " GiB; " +
+               "peak " + formatNumber(scaling.decimation.peakGigabytes, 2) + " GiB (warped-layer cache budget " +
+                   formatNumber(scaling.decimation.layerBudgetGigabytes, 1) + " GiB; layers warped " +
+                   std::to_string(scaling.decimation.layersComputed) + ", " +
+                   std::to_string(scaling.decimation.layersWarpedAgain) + " of them again); " +
                    std::to_string(run.statistics.errorsComputed) + " + " +
                    std::to_string(run.refinement.errorsComputed) + " errors; " + std::to_string(run.collapses) +
                    " collapses, " + std::to_string(run.refinement.moves.size()) + " moves (" +

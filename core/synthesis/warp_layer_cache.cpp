@@ -44,6 +44,7 @@ void WarpLayerCache::evictOverBudget() {
   while (bytes_ > budgetBytes_ && recency_.size() > 1) {
     bytes_ -= recency_.back().second->bytes();
     index_.erase(recency_.back().first);
+    evicted_.insert(recency_.back().first);
     recency_.pop_back();
   }
 }
@@ -59,6 +60,7 @@ std::shared_ptr<const CompactLayer> WarpLayerCache::get(int source, int destinat
       return found->second->second;
     }
     ++misses_;
+    missesAfterEviction_ += evicted_.erase(key);
   }
   auto layer = std::make_shared<const CompactLayer>(make());
   std::lock_guard lock(mutex_);

@@ -17,6 +17,7 @@
 #include <memory>
 #include <mutex>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace triwalk {
 
@@ -52,6 +53,9 @@ public:
 
   uint64_t hits() const { return hits_; }
   uint64_t misses() const { return misses_; }
+  // Misses of layers the cache had held and dropped for the budget: what
+  // a larger budget would have saved.
+  uint64_t missesAfterEviction() const { return missesAfterEviction_; }
   size_t bytes() const;
   size_t budgetBytes() const;
   // Evicts least recently used layers down to a new budget if it is lower.
@@ -68,7 +72,8 @@ private:
   std::list<Entry> recency_;  // most recent first
   std::unordered_map<Key, std::list<Entry>::iterator> index_;
   mutable std::mutex mutex_;
-  uint64_t hits_ = 0, misses_ = 0;
+  std::unordered_set<Key> evicted_;  // keys dropped for the budget, kept to count their misses
+  uint64_t hits_ = 0, misses_ = 0, missesAfterEviction_ = 0;
 };
 
 // A budget for the cache from the memory left once the views are loaded:

@@ -64,6 +64,9 @@ TEST_CASE("bad options fail in one line naming the option, before any work, and 
       {"decimate" + data + " --out " + (directory / "data").string() + " --target 4", "is a folder, not a file"},
       {"decimate" + data + " --out " + selection + " --target 4 --error-width 100", "--error-width: width 100 must divide"},
       {"decimate" + data + " --out " + selection + " --target 4 --no-such-option", "--no-such-option"},
+      {"decimate" + data + " --out " + selection + " --target 4 --error-stride 3", "--error-stride: 3 not in {1,2,4}"},
+      {"decimate" + data + " --out " + selection + " --target 4 --error-stride 2 --holes fill",
+       "--error-stride: a lattice of pixels cannot be hole-filled"},
       {"render" + data + " --out " + frames + " --fov nan", "--fov: must be a finite number"},
       {"render" + data + " --out " + frames + " --pitch -inf", "--pitch: must be a finite number"},
       {"render" + data + " --out /proc/version/frames", "--out: cannot create folder /proc/version/frames"},
@@ -281,6 +284,12 @@ TEST_CASE("suite: each count selected with the selection's blend weights and wid
   const nlohmann::json grid = run(" --selection-source-mesh grid");
   CHECK(grid["settings"]["quality"].get<std::string>().find("simplified") == std::string::npos);
   CHECK(grid["probe_errors"]["uniform"] == byDefault["probe_errors"]["uniform"]);
+  // Errors on a lattice for the selection alone: it says so, and the
+  // evaluation still reads every pixel.
+  const nlohmann::json lattice = run(" --error-stride 2");
+  CHECK(lattice["settings"]["quality"].get<std::string>().find("every other row and column") != std::string::npos);
+  CHECK(lattice["settings"]["error_stride"].get<int>() == 2);
+  CHECK(lattice["probe_errors"]["uniform"] == byDefault["probe_errors"]["uniform"]);
 
   // A selection off its target (as when no valid collapse is left): the
   // baselines get as many references as edge collapse kept.

@@ -4,12 +4,15 @@
 // how both serve the samples outside the mesh: as eval and the viewer do.
 
 #include "core/geometry/view_mesh.h"
+#include "core/image/color.h"
 #include "core/io/atomic_file.h"
 #include "core/io/dataset.h"
 #include "core/selection/selection.h"
 #include "core/selection/selection_refinement.h"
+#include "core/selection/triangle_error.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
+#include "core/synthesis/blend.h"
 #include "tests/analytic_scene.h"
 #include "tests/test_support.h"
 
@@ -17,6 +20,7 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <tuple>
 
@@ -617,6 +621,25 @@ TEST_CASE("Ctrl-C stops the exchange search between chunks of its errors, not af
 
 namespace {
 
+// The small captured data set the tests below decimate: 5 x 3 samples of
+// 64 x 32 pixels, and errors at that width.
+struct SmallCapture {
+  testing::TemporaryDirectory directory;
+  Dataset dataset = write(directory);
+
+  static TriangleErrorSettings errorSettings() {
+    TriangleErrorSettings settings;
+    settings.width = 64;
+    return settings;
+  }
+
+private:
+  static Dataset write(const testing::TemporaryDirectory& directory) {
+    testing::writeAnalyticDataset(directory / "data", 5, 3, 64, 1);
+    return Dataset::open(directory / "data");
+  }
+};
+
 // A small captured data set decimated to 5 samples and refined, as the
 // selection runs it, with the thread count given.
 struct DecimatedAndRefined {
@@ -663,13 +686,11 @@ void checkSameSelection(const DecimatedAndRefined& a, const DecimatedAndRefined&
 TEST_CASE(
     "a captured data set: decimation then refinement, the same with 1 and 2 threads (grid and simplified source "
     "meshes), and through selection.json") {
-  testing::TemporaryDirectory directory;
-  testing::writeAnalyticDataset(directory / "data", 5, 3, 64, 1);
-  const Dataset dataset = Dataset::open(directory / "data");
+  const SmallCapture capture;
+  const Dataset& dataset = capture.dataset;
   const std::vector<glm::dvec2> positions = samplePositions(dataset);
   const ViewMesh initial = ViewMesh::delaunay(positions, {}, "test");
-  TriangleErrorSettings settings;
-  settings.width = 64;
+  TriangleErrorSettings settings = SmallCapture::errorSettings();
   std::vector<Collapse> one;  // the grid's, for the selection file below
   RefinementResult refinedOne;
   for (const SourceMesh mesh : {SourceMesh::Simplified, SourceMesh::Grid}) {
@@ -691,7 +712,7 @@ TEST_CASE(
   selection.triangles = refinedOne.triangles;
   selection.initialTriangles = initial.triangles();
   selection.collapses = one;
-  const std::filesystem::path file = directory / "selection.json";
+  const std::filesystem::path file = capture.directory / "selection.json";
   writeSelection(file, selection, dataset);
   const Selection loaded = readSelection(file, dataset);
   REQUIRE(loaded.collapses.size() == one.size());
@@ -705,12 +726,59 @@ TEST_CASE(
   CHECK(samplesAfter(initial.vertexCount(), loaded.collapses, loaded.collapses.size()) == 5);
 }
 
+TEST_CASE("the selection's errors on a lattice: the whole warp's blend at its pixels; the same selection with 1 and 2 threads") {
+  const SmallCapture capture;
+  const Dataset& dataset = capture.dataset;
+  TriangleErrorSettings settings = SmallCapture::errorSettings();
+  settings.synthesis = withSelectionDefaults(settings.synthesis);
+  TriangleErrorSettings lattice = settings;
+  lattice.stride = 2;
+  DatasetTriangleErrors whole(dataset, settings, LoadedViews::Samples, true);
+  DatasetTriangleErrors sparse(dataset, lattice, LoadedViews::Samples, true);
+  const std::vector<SampleReconstruction> requests = {{{0, 1, 3}, 4}, {{2, 7, 12}, 6}, {{0, 5, 14}, 9}, {{1, 4, 10}, 8}};
+  std::vector<double> wholeErrors(requests.size()), sparseErrors(requests.size());
+  whole.computeReconstructionErrors(requests, wholeErrors);
+  sparse.computeReconstructionErrors(requests, sparseErrors);
+  for (size_t k = 0; k < requests.size(); ++k) {
+    // The expected error, from the whole panorama's warps kept as the cache
+    // keeps them, blended and compared at the lattice's pixels alone.
+    const int destination = requests[k].destination;
+    const glm::vec3 position = dataset.sample(destination).position;
+    const DestinationCamera camera = DestinationCamera::panorama(position, 64, 32);
+    std::vector<CompactLayer> layers;
+    glm::vec3 sourcePositions[3];
+    for (int i = 0; i < 3; ++i) {
+      const WarpSource& source = whole.source(requests[k].references[size_t(i)]);
+      layers.emplace_back(warpToCamera(source, camera, settings.synthesis.warp.method, LayerReliability::Omitted));
+      sourcePositions[i] = source.position();
+    }
+    const CompactLayer* pointers[3] = {&layers[0], &layers[1], &layers[2]};
+    const std::vector<float> weights = blendWeights(position, sourcePositions, settings.synthesis.blend);
+    const ColorImage& truth = whole.sampleDisplay(destination);
+    ErrorAccumulator expected(64, 32, settings.error, 2);
+    for (int y = 0; y < 32; y += 2) {
+      for (int x = 0; x < 64; x += 2) {
+        const size_t i = size_t(y) * 64 + size_t(x);
+        const BlendedPixel pixel = blendPixelOf<CompactLayer>(pointers, weights, i, settings.synthesis.blend);
+        expected.add(y, displayColorFast(pixel.color), pixel.hole, truth.pixels[i]);
+      }
+    }
+    INFO("request " << k << ": every pixel " << wholeErrors[k] << ", the lattice " << sparseErrors[k]);
+    CHECK(sparseErrors[k] == expected.result().total);
+    CHECK(sparseErrors[k] != wholeErrors[k]);
+    CHECK(std::abs(sparseErrors[k] - wholeErrors[k]) < 0.2 * wholeErrors[k]);
+  }
+
+  const DecimatedAndRefined first = decimateAndRefine(dataset, lattice, 1);
+  const DecimatedAndRefined second = decimateAndRefine(dataset, lattice, 2);
+  REQUIRE(first.log.size() >= 10);
+  checkSameSelection(first, second);
+}
+
 TEST_CASE("the warped-layer cache's budget changes how many layers are warped, never the selection") {
-  testing::TemporaryDirectory directory;
-  testing::writeAnalyticDataset(directory / "data", 5, 3, 64, 1);
-  const Dataset dataset = Dataset::open(directory / "data");
-  TriangleErrorSettings settings;
-  settings.width = 64;
+  const SmallCapture capture;
+  const Dataset& dataset = capture.dataset;
+  TriangleErrorSettings settings = SmallCapture::errorSettings();
   // One thread, so that no two threads warp the same layer at once and the
   // counts are exact.
   const DecimatedAndRefined automatic = decimateAndRefine(dataset, settings, 1);

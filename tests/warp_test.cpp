@@ -12,6 +12,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace triwalk {
@@ -37,6 +38,14 @@ ReconstructionError compare(const BlendedView& view, const Panorama& truth, Scal
 // The warp and blend without the hole fill: these tests look at what the
 // warp itself leaves.
 const SynthesisOptions kRaw{.warp = {}, .blend = {}, .holes = HoleMode::Mark};
+
+// A source in roomWithPillar(), its panorama simplified or not.
+std::unique_ptr<WarpSource> pillarRoomSource(SourceMesh mesh) {
+  const glm::vec3 position(-1.0f, 0.0f, 1.5f);
+  WarpOptions options;
+  options.mesh = mesh;
+  return std::make_unique<WarpSource>(renderPanorama(roomWithPillar(), position, kWidth), position, 0.0f, options);
+}
 
 SynthesizedView synthesize(const AnalyticScene& scene, std::vector<glm::vec3> sourcePositions, glm::vec3 destination,
                            const SynthesisOptions& options = kRaw) {
@@ -233,16 +242,13 @@ TEST_CASE("the stretch test drops rubber sheets: without it they hide what a sec
 }
 
 TEST_CASE("warp results are identical for any thread count") {
-  const AnalyticScene scene = roomWithPillar();
-  const glm::vec3 s1(-1.0f, 0.0f, 1.5f), destination(1.0f, 0.3f, 1.4f);
-  const Panorama panorama = renderPanorama(scene, s1, kWidth);
-  const WarpSource source(panorama, s1, 0.0f, WarpOptions{});
-  const DestinationCamera camera = DestinationCamera::panorama(destination, kWidth, kWidth / 2);
-  const WarpLayer all = warpToCamera(source, camera, WarpMethod::Mesh);
+  const std::unique_ptr<WarpSource> source = pillarRoomSource(SourceMesh::Grid);
+  const DestinationCamera camera = DestinationCamera::panorama(glm::vec3(1.0f, 0.3f, 1.4f), kWidth, kWidth / 2);
+  const WarpLayer all = warpToCamera(*source, camera, WarpMethod::Mesh);
   WarpLayer one;
   {
     tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
-    one = warpToCamera(source, camera, WarpMethod::Mesh);
+    one = warpToCamera(*source, camera, WarpMethod::Mesh);
   }
   CHECK(one.color.pixels == all.color.pixels);
   CHECK(one.distance.pixels == all.distance.pixels);
@@ -253,19 +259,14 @@ TEST_CASE("row spans warp to the same layer as testing every pixel of each range
   // The room's walls, floor and ceiling simplify to triangles tens of
   // columns wide, some around a pole or across the seam; a yawed
   // destination moves the seam through them.
-  const AnalyticScene scene = roomWithPillar();
-  const glm::vec3 s1(-1.0f, 0.0f, 1.5f);
-  const Panorama panorama = renderPanorama(scene, s1, kWidth);
   for (const SourceMesh mesh : {SourceMesh::Simplified, SourceMesh::Grid}) {
-    WarpOptions options;
-    options.mesh = mesh;
-    const WarpSource source(panorama, s1, 0.0f, options);
+    const std::unique_ptr<WarpSource> source = pillarRoomSource(mesh);
     for (const float yaw : {0.0f, 1.3f, -2.9f}) {
       for (const glm::vec3 destination : {glm::vec3(1.0f, 0.3f, 1.4f), glm::vec3(-3.5f, 3.2f, 2.6f)}) {
         const DestinationCamera camera = DestinationCamera::panorama(destination, kWidth, kWidth / 2, yaw);
-        const WarpLayer spans = warpToCamera(source, camera, WarpMethod::Mesh, LayerReliability::Computed);
+        const WarpLayer spans = warpToCamera(*source, camera, WarpMethod::Mesh, LayerReliability::Computed);
         const WarpLayer scanned =
-            warpToCamera(source, camera, WarpMethod::Mesh, LayerReliability::Computed, PanoramaRaster::BoundingBox);
+            warpToCamera(*source, camera, WarpMethod::Mesh, LayerReliability::Computed, PanoramaRaster::BoundingBox);
         INFO(sourceMeshName(mesh) << " yaw " << yaw << " destination " << destination.x << ", " << destination.y);
         CHECK(spans.covered == scanned.covered);
         CHECK(spans.distance.pixels == scanned.distance.pixels);
@@ -276,6 +277,51 @@ TEST_CASE("row spans warp to the same layer as testing every pixel of each range
           CHECK(3 * spans.pixelsTested < 2 * scanned.pixelsTested);
         } else {
           CHECK(spans.pixelsTested <= scanned.pixelsTested);
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("a panorama's lattice warps to exactly the whole panorama's pixels there, testing a fraction of them") {
+  // Every stride-th row and column: the same pixel centres, the same
+  // coverage tests and z-test, so the same bits, whatever the source mesh,
+  // the warp method, the seam's place (yaw) or the destination.
+  for (const SourceMesh mesh : {SourceMesh::Simplified, SourceMesh::Grid}) {
+    const std::unique_ptr<WarpSource> source = pillarRoomSource(mesh);
+    for (const WarpMethod method : {WarpMethod::Mesh, WarpMethod::Point}) {
+      for (const float yaw : {0.0f, -2.9f}) {
+        for (const glm::vec3 destination : {glm::vec3(1.0f, 0.3f, 1.4f), glm::vec3(-3.5f, 3.2f, 2.6f)}) {
+          const WarpLayer whole = warpToCamera(*source, DestinationCamera::panorama(destination, kWidth, kWidth / 2, yaw),
+                                               method, LayerReliability::Computed);
+          for (const int stride : {2, 4}) {
+            INFO(sourceMeshName(mesh) << (method == WarpMethod::Mesh ? " mesh" : " point") << " warp, yaw " << yaw
+                                      << ", destination " << destination.x << ", " << destination.y << ", stride " << stride);
+            const DestinationCamera camera = DestinationCamera::panoramaLattice(destination, kWidth, kWidth / 2, stride, yaw);
+            const WarpLayer lattice = warpToCamera(*source, camera, method, LayerReliability::Computed);
+            REQUIRE(lattice.color.width == kWidth / stride);
+            REQUIRE(lattice.color.height == kWidth / 2 / stride);
+            size_t mismatches = 0, covered = 0;
+            for (int y = 0; y < lattice.color.height; ++y) {
+              for (int x = 0; x < lattice.color.width; ++x) {
+                const size_t i = size_t(y) * size_t(lattice.color.width) + size_t(x);
+                const size_t j = size_t(y * stride) * size_t(kWidth) + size_t(x * stride);
+                covered += lattice.covered[i];
+                const bool same = lattice.covered[i] == whole.covered[j] &&
+                                  std::bit_cast<uint32_t>(lattice.distance.pixels[i]) ==
+                                      std::bit_cast<uint32_t>(whole.distance.pixels[j]) &&
+                                  lattice.color.pixels[i] == whole.color.pixels[j] &&
+                                  lattice.reliability[i] == whole.reliability[j];
+                mismatches += same ? 0 : 1;
+              }
+            }
+            CHECK(mismatches == 0);
+            if (method == WarpMethod::Mesh) {
+              CHECK(covered > lattice.covered.size() / 2);
+              INFO("pixel centres tested: " << lattice.pixelsTested << " on the lattice, " << whole.pixelsTested << " in all");
+              CHECK(lattice.pixelsTested * size_t(stride) < whole.pixelsTested);
+            }
+          }
         }
       }
     }
@@ -341,6 +387,37 @@ TEST_CASE("R, B and E by hand on a 4x2 image") {
   CHECK(weighted.badPercent == doctest::Approx(7.322329).epsilon(1e-5));
   CHECK(weighted.rms == doctest::Approx(0.0541196).epsilon(1e-5));
   CHECK(weighted.total == doctest::Approx(1.273429).epsilon(1e-5));
+}
+
+TEST_CASE("an error on a lattice: its rows weighted by their own latitudes, normalised over its pixels") {
+  // An 8x4 panorama, stride 2: rows 0 and 2 (latitudes 67.5 and -22.5
+  // degrees, weights 0.382683 and 0.923880), columns 0, 2, 4 and 6. One bad
+  // pixel on the lattice, at (2, 2), off by 0.2 in every channel:
+  //   B = 100 * 0.923880 / (4 * (0.382683 + 0.923880)) = 17.677670 %
+  //   R = sqrt(0.923880 * 3 * 0.04 / (3 * 4 * 1.306563)) = 0.0840896
+  //   E = 0.840896 + 1.7677670 = 2.608663
+  // (the whole image's rows 1 and 3 weigh nothing here).
+  const glm::vec3 gray(0.5f), bad(0.7f);
+  ErrorAccumulator lattice(8, 4, ErrorOptions{}, 2);
+  for (int y = 0; y < 4; y += 2) {
+    for (int x = 0; x < 8; x += 2) lattice.add(y, x == 2 && y == 2 ? bad : gray, false, gray);
+  }
+  const ReconstructionError error = lattice.result();
+  CHECK(error.badPercent == doctest::Approx(17.677670).epsilon(1e-6));
+  CHECK(error.rms == doctest::Approx(0.0840896).epsilon(1e-6));
+  CHECK(error.total == doctest::Approx(2.608663).epsilon(1e-6));
+
+  // A difference the same everywhere is the same error on any lattice.
+  const ColorImage off(8, 4, glm::vec3(0.6f));
+  const ReconstructionError everywhere = reconstructionError(off, {}, ColorImage(8, 4, gray), ErrorOptions{});
+  for (const int stride : {2, 4}) {
+    ErrorAccumulator sparse(8, 4, ErrorOptions{}, stride);
+    for (int y = 0; y < 4; y += stride) {
+      for (int x = 0; x < 8; x += stride) sparse.add(y, glm::vec3(0.6f), false, gray);
+    }
+    CHECK(sparse.result().rms == doctest::Approx(everywhere.rms).epsilon(1e-12));
+    CHECK(sparse.result().badPercent == doctest::Approx(everywhere.badPercent).epsilon(1e-12));
+  }
 }
 
 }  // namespace triwalk

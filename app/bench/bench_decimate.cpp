@@ -42,6 +42,7 @@ BenchDecimation runBenchDecimation(const Dataset& dataset, int errorWidth) {
   TriangleErrorSettings settings;
   settings.width = errorWidth;
   settings.synthesis = withSelectionDefaults(settings.synthesis);  // as decimate prices collapses
+  settings.stride = kSelectionErrorStride;
   const auto loadStart = BenchClock::now();
   // Progress on stderr (minutes of work); the table goes to stdout.
   constexpr bool kQuiet = false;

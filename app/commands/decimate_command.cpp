@@ -50,7 +50,8 @@ void registerDecimateCommand(CLI::App& app) {
       throw InputError("--target", std::to_string(a.target) + " is more than the " + std::to_string(dataset.sampleCount()) +
                                        " samples of the data set");
     }
-    const TriangleErrorSettings settings = triangleErrorSettings(a.errors, dataset);
+    TriangleErrorSettings settings = triangleErrorSettings(a.errors, dataset);
+    applyErrorStride(a.selection, settings);
     std::printf("%s\n", describeErrorSettings(settings).c_str());
 
     InterruptScope interruptScope;

@@ -223,6 +223,12 @@ void registerSuiteCommand(CLI::App& app) {
         throw InputError("--only", "no scene '" + name + "' in " + a.spec);
       }
     }
+    {
+      // --error-stride against the options, before anything is written.
+      TriangleErrorSettings selectionLattice;
+      selectionLattice.synthesis = synthesisOptions(a.errors.quality);
+      applyErrorStride(a.selection, selectionLattice);
+    }
     const std::filesystem::path out = a.out;
     std::error_code error;
     std::filesystem::create_directories(out, error);
@@ -254,6 +260,7 @@ void registerSuiteCommand(CLI::App& app) {
       TriangleErrorSettings selectionErrorSettings = settings;
       selectionErrorSettings.synthesis.blend.weights = parseBlendWeights(a.selectionBlendWeights);
       selectionErrorSettings.synthesis.warp.mesh = parseSourceMesh(a.selectionSourceMesh);
+      applyErrorStride(a.selection, selectionErrorSettings);
       if (a.selectionErrorWidth > 0) {
         dataset.downsamplingFactor(a.selectionErrorWidth, "--selection-error-width");
         selectionErrorSettings.width = a.selectionErrorWidth;

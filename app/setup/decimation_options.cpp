@@ -1,6 +1,7 @@
 #include "app/setup/decimation_options.h"
 
 #include "app/setup/option_checks.h"
+#include "core/support/errors.h"
 
 namespace triwalk {
 
@@ -27,8 +28,19 @@ TriangleErrorSettings triangleErrorSettings(const ErrorArguments& arguments, con
   return settings;
 }
 
+void applyErrorStride(const SelectionArguments& arguments, TriangleErrorSettings& settings) {
+  if (arguments.errorStride > 1 && settings.synthesis.holes == HoleMode::Fill) {
+    throw InputError("--error-stride", "a lattice of pixels cannot be hole-filled: use it with --holes black or mark");
+  }
+  settings.stride = arguments.errorStride;
+}
+
 std::string describeErrorSettings(const TriangleErrorSettings& settings) {
-  return "errors at " + std::to_string(settings.width) + "x" + std::to_string(settings.width / 2) + ", " +
+  const std::string lattice =
+      settings.stride == 1   ? std::string()
+      : settings.stride == 2 ? std::string(" (every other row and column)")
+                             : " (every " + std::to_string(settings.stride) + "th row and column)";
+  return "errors at " + std::to_string(settings.width) + "x" + std::to_string(settings.width / 2) + lattice + ", " +
          (settings.destinations == TriangleDestinations::Centroid     ? "centroid"
           : settings.destinations == TriangleDestinations::Quadrature ? "quadrature"
                                                                        : "interior") +
@@ -87,6 +99,13 @@ void addSelectionOptions(CLI::App& command, SelectionArguments& arguments) {
                   "of them")
       ->capture_default_str()
       ->check(nonNegativeNumber());
+  command
+      .add_option("--error-stride", arguments.errorStride,
+                  "Compute the selection's errors on every N-th row and column of the error panorama (the same "
+                  "pixels the whole one has there, a quarter of them at 2); 1: every pixel. Judging a selection "
+                  "(eval, the suite's evaluation) always reads every pixel")
+      ->capture_default_str()
+      ->check(CLI::IsMember({1, 2, 4}));
 }
 
 SelectionSettings selectionSettings(const SelectionArguments& arguments, double maxError, int targetSamples) {
@@ -125,6 +144,7 @@ nlohmann::json describeSelectionSettings(const SelectionSettings& settings, cons
           {"refine_screen", settings.refinement.screenedShare},
           {"refine_priced", settings.refinement.pricedSamples},
           {"error_width", errors.width},
+          {"error_stride", errors.stride},
           {"quality", describeErrorSettings(errors)}};
 }
 

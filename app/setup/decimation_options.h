@@ -35,6 +35,7 @@ struct SelectionArguments {
   std::optional<int> exchanges;        // none: as many as references
   double refineScreen = RefinementOptions{}.screenedShare;
   int refinePriced = RefinementOptions{}.pricedSamples;
+  int errorStride = kSelectionErrorStride;  // TriangleErrorSettings::stride of the selection's errors
 };
 
 void addSelectionOptions(CLI::App& command, SelectionArguments& arguments);
@@ -42,6 +43,10 @@ SelectionSettings selectionSettings(const SelectionArguments& arguments, double 
 // For selection.json: the settings that made it.
 nlohmann::json describeSelectionSettings(const SelectionSettings& settings, const TriangleErrorSettings& errors);
 TriangleErrorSettings triangleErrorSettings(const ErrorArguments& arguments, const Dataset& dataset);
+// The selection's errors on the lattice --error-stride asks for; throws
+// InputError naming it where the settings cannot have one (a hole fill
+// needs every pixel).
+void applyErrorStride(const SelectionArguments& arguments, TriangleErrorSettings& settings);
 std::string describeErrorSettings(const TriangleErrorSettings& settings);
 
 }  // namespace triwalk

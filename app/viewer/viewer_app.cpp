@@ -63,6 +63,7 @@ public:
     // sees; live decimation measures its errors as decimate does by
     // default, so its steps match the command's.
     errorSettings.synthesis = withSelectionDefaults(options.synthesis);
+    errorSettings.stride = kSelectionErrorStride;
     session_ = std::make_unique<DecimationSession>(dataset_, errorSettings, DecimationOptions{}, selection);
     state_.dataset = &dataset_;
     state_.session = session_.get();

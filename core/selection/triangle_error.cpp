@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <bit>
 #include <limits>
 
 namespace triwalk {
@@ -22,6 +23,13 @@ DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const Trian
                                              LoadedViews views, bool quiet)
     : dataset_(dataset), settings_(settings), layerCache_(settings.layerCacheBytes.value_or(0)) {
   dataset.downsamplingFactor(settings.width, "--error-width");
+  if (!std::has_single_bit(unsigned(settings.stride)) || (settings.width / 2) % settings.stride != 0) {
+    throw InputError("--error-stride", "must be a power of two dividing the error panorama's height (" +
+                                           std::to_string(settings.width / 2) + "), not " + std::to_string(settings.stride));
+  }
+  if (settings.stride > 1 && settings.synthesis.holes == HoleMode::Fill) {
+    throw InputError("--error-stride", "a lattice of pixels cannot be hole-filled: use it with --holes black or mark");
+  }
   const int samples = dataset.sampleCount();
   const int probes = views == LoadedViews::SamplesAndProbes ? dataset.probeCount() : 0;
   sources_.resize(size_t(samples));
@@ -144,7 +152,8 @@ ReconstructionError DatasetTriangleErrors::errorAt(std::span<const int> referenc
 
 double DatasetTriangleErrors::sampleError(const Triangle& triangle, int destination) {
   const glm::vec3 position = dataset_.sample(destination).position;
-  const DestinationCamera camera = DestinationCamera::panorama(position, settings_.width, settings_.width / 2);
+  const int stride = settings_.stride;
+  const DestinationCamera camera = DestinationCamera::panoramaLattice(position, settings_.width, settings_.width / 2, stride);
   const LayerReliability reliability = settings_.synthesis.blend.weights == BlendWeights::Reliability
                                            ? LayerReliability::Computed
                                            : LayerReliability::Omitted;
@@ -161,7 +170,7 @@ double DatasetTriangleErrors::sampleError(const Triangle& triangle, int destinat
   }
   const std::vector<float> weights = blendWeights(position, sourcePositions, settings_.synthesis.blend);
   const ColorImage& truth = sampleDisplay_[size_t(destination)];
-  ErrorAccumulator accumulator(truth.width, truth.height, settings_.error);
+  ErrorAccumulator accumulator(truth.width, truth.height, settings_.error, stride);
   if (settings_.synthesis.holes == HoleMode::Fill) {
     // The fill needs the whole blended image.
     BlendedView view = blendLayersOf<CompactLayer>(pointers, weights, truth.width, truth.height, settings_.synthesis.blend);
@@ -174,12 +183,16 @@ double DatasetTriangleErrors::sampleError(const Triangle& triangle, int destinat
     });
     return accumulator.result().total;
   }
-  // Blend and compare pixel by pixel, without building the blended image.
-  tbb::parallel_for(0, truth.height, [&](int y) {
-    for (int x = 0; x < truth.width; ++x) {
-      const size_t i = size_t(y) * size_t(truth.width) + size_t(x);
+  // Blend and compare pixel by pixel of the lattice, without building the
+  // blended image.
+  const int layerWidth = camera.layerWidth();
+  tbb::parallel_for(0, camera.layerHeight(), [&](int row) {
+    const int y = row * stride;
+    for (int column = 0; column < layerWidth; ++column) {
+      const size_t i = size_t(row) * size_t(layerWidth) + size_t(column);
       const BlendedPixel pixel = blendPixelOf<CompactLayer>(pointers, weights, i, settings_.synthesis.blend);
-      accumulator.add(y, displayColorFast(pixel.color), pixel.hole, truth.pixels[i]);
+      accumulator.add(y, displayColorFast(pixel.color), pixel.hole,
+                      truth.pixels[size_t(y) * size_t(truth.width) + size_t(column * stride)]);
     }
   });
   return accumulator.result().total;

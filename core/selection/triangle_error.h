@@ -93,6 +93,11 @@ inline constexpr BlendWeights kSelectionBlendWeights = BlendWeights::Distance;
 // paired; docs/RESULTS.md, "Selecting on simplified meshes").
 inline constexpr SourceMesh kSelectionSourceMesh = SourceMesh::Simplified;
 
+// The lattice the selection's errors are read on unless asked
+// (TriangleErrorSettings::stride): decimate, the suite's selections, the
+// viewer's live decimation and bench decimate.
+inline constexpr int kSelectionErrorStride = 1;
+
 // A command's synthesis options with the selection's defaults on top (the
 // error's holes, kSelectionSourceMesh, kSelectionBlendWeights), the rest
 // (stretch test, tolerances) kept: the one place the selection's defaults
@@ -102,6 +107,11 @@ SynthesisOptions withSelectionDefaults(SynthesisOptions synthesis);
 
 struct TriangleErrorSettings {
   int width = kDefaultErrorWidth;  // panorama width the errors are computed at
+  // The errors the selection reads from cached layers (computeErrors,
+  // computeReconstructionErrors) on the lattice of every stride-th row and
+  // column of that panorama: a power of two, 1 for every pixel. errorAt,
+  // which judges selections, always reads every pixel.
+  int stride = 1;
   // Warped layers kept for reuse; none: automaticLayerCacheBytes() once
   // the views are loaded, so that it counts what they took.
   std::optional<size_t> layerCacheBytes;

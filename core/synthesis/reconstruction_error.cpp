@@ -24,9 +24,10 @@ ColorImage toDisplayColors(const ColorImage& linear) {
   return display;
 }
 
-ErrorAccumulator::ErrorAccumulator(int width, int height, const ErrorOptions& options)
-    : width_(width), options_(options), badThreshold_(options.delta / 255.0), rowSquared_(size_t(height), 0.0),
+ErrorAccumulator::ErrorAccumulator(int width, int height, const ErrorOptions& options, int stride)
+    : width_(width), stride_(stride), options_(options), badThreshold_(options.delta / 255.0), rowSquared_(size_t(height), 0.0),
       rowBad_(size_t(height), 0.0), rowWeight_(size_t(height), 1.0) {
+  TRIWALK_CHECK(stride >= 1 && width % stride == 0 && height % stride == 0, "an error's stride must divide the image");
   if (options.weighting == PixelWeighting::SolidAngle) {
     const EquirectProjection projection{width, height, 0.0f};
     for (int y = 0; y < height; ++y) rowWeight_[size_t(y)] = projection.rowSolidAngleWeight(y);
@@ -35,8 +36,8 @@ ErrorAccumulator::ErrorAccumulator(int width, int height, const ErrorOptions& op
 
 ReconstructionError ErrorAccumulator::result() const {
   double weightSum = 0.0, squaredSum = 0.0, badSum = 0.0;
-  for (size_t y = 0; y < rowWeight_.size(); ++y) {
-    weightSum += rowWeight_[y] * width_;
+  for (size_t y = 0; y < rowWeight_.size(); y += size_t(stride_)) {
+    weightSum += rowWeight_[y] * (width_ / stride_);
     squaredSum += rowWeight_[y] * rowSquared_[y];
     badSum += rowWeight_[y] * rowBad_[y];
   }

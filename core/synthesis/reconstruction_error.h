@@ -37,10 +37,13 @@ struct ReconstructionError {
 
 // The error of a W x H image computed pixel by pixel: rows may be filled
 // in parallel (each row by one thread); the totals are summed in row
-// order, so the result does not depend on the thread count.
+// order, so the result does not depend on the thread count. With a
+// stride, the error of its lattice (every stride-th row and column, as
+// DestinationCamera::panoramaLattice warps): only those rows are added
+// to, W / stride pixels each, and weighted by their own latitudes.
 class ErrorAccumulator {
 public:
-  ErrorAccumulator(int width, int height, const ErrorOptions& options);
+  ErrorAccumulator(int width, int height, const ErrorOptions& options, int stride = 1);
   // A pixel in display colors; returns its RMS channel difference (1 for
   // holes). Inline: every pixel of every reconstruction comes through here.
   float add(int y, glm::vec3 reconstruction, bool hole, glm::vec3 truth) {
@@ -61,6 +64,7 @@ public:
 
 private:
   int width_;
+  int stride_;
   ErrorOptions options_;
   double badThreshold_;
   std::vector<double> rowSquared_, rowBad_, rowWeight_;

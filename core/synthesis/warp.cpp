@@ -15,6 +15,7 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <optional>
 
 namespace triwalk {
 
@@ -221,6 +222,15 @@ DestinationCamera DestinationCamera::panorama(glm::vec3 position, int width, int
   camera.kind = Kind::Equirect;
   camera.position = position;
   camera.equirect = {width, height, yawRadians};
+  return camera;
+}
+
+DestinationCamera DestinationCamera::panoramaLattice(glm::vec3 position, int width, int height, int stride,
+                                                     float yawRadians) {
+  TRIWALK_CHECK(std::has_single_bit(unsigned(stride)) && width % stride == 0 && height % stride == 0,
+                "a lattice's stride must be a power of two dividing the panorama");
+  DestinationCamera camera = panorama(position, width, height, yawRadians);
+  camera.stride = stride;
   return camera;
 }
 
@@ -584,14 +594,37 @@ float distanceFromInverse(float inverseDistance) {
   return inverseDistance > 0.0f ? 1.0f / inverseDistance : std::numeric_limits<float>::infinity();
 }
 
+// The z-buffer of a destination's lattice (every pixel but for a
+// panorama lattice): pixel (x, y) of the destination, if on the lattice,
+// is entry (y / stride, x / stride). Strides are powers of two, so the
+// raster's inner loop shifts instead of dividing.
+class LatticeBuffer {
+public:
+  explicit LatticeBuffer(const DestinationCamera& destination)
+      : shift_(std::countr_zero(unsigned(destination.stride))), mask_(destination.stride - 1),
+        width_(destination.layerWidth()),
+        keys_(size_t(destination.layerWidth()) * size_t(destination.layerHeight()), kEmpty) {
+    TRIWALK_CHECK(std::has_single_bit(unsigned(destination.stride)), "a lattice's stride must be a power of two");
+  }
+  bool onLattice(int x, int y) const { return ((x | y) & mask_) == 0; }
+  uint64_t& at(int x, int y) { return keys_[size_t(y >> shift_) * size_t(width_) + size_t(x >> shift_)]; }
+  // The first lattice row or column at or after `from`, which may be
+  // negative (an unwrapped column): two's complement rounds it up too.
+  int firstOnLattice(int from) const { return (from + mask_) & ~mask_; }
+  int stride() const { return mask_ + 1; }
+
+private:
+  int shift_, mask_, width_;
+  std::vector<uint64_t> keys_;
+};
+
 // Splats a vertex into the destination pixel its position falls in.
-void splatPoint(const ProjectedVertex& p, uint32_t vertex, int width, int height, bool wrap, std::vector<uint64_t>& zBuffer) {
+void splatPoint(const ProjectedVertex& p, uint32_t vertex, int width, int height, bool wrap, LatticeBuffer& zBuffer) {
   if (!p.valid) return;
   int x = int(std::floor(p.screen.x)), y = int(std::floor(p.screen.y));
   if (wrap) x = x < 0 ? x + width : x >= width ? x - width : x;  // screen x lies in [0, width]
-  if (x < 0 || y < 0 || x >= width || y >= height) return;
-  atomicMin(zBuffer[size_t(y) * size_t(width) + size_t(x)],
-            makeKey(distanceFromInverse(p.inverseDistance), (vertex << 2) | kPointPayload));
+  if (x < 0 || y < 0 || x >= width || y >= height || !zBuffer.onLattice(x, y)) return;
+  atomicMin(zBuffer.at(x, y), makeKey(distanceFromInverse(p.inverseDistance), (vertex << 2) | kPointPayload));
 }
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
@@ -605,6 +638,7 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
   const int width = destination.width(), height = destination.height();
   const bool equirect = destination.kind == DestinationCamera::Kind::Equirect;
   TRIWALK_CHECK(equirect || source.mesh() == SourceMesh::Grid, "a simplified source warps to panoramas only");
+  TRIWALK_CHECK(equirect || destination.stride == 1, "only a panorama warps on a lattice");
   const uint32_t vertexCount = source.vertexCount();
   std::vector<ProjectedVertex> projected(vertexCount);
   tbb::parallel_for(tbb::blocked_range<uint32_t>(0, vertexCount, 4096), [&](const tbb::blocked_range<uint32_t>& r) {
@@ -615,17 +649,19 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
   timings.projectSeconds = secondsSince(stageStart);
   stageStart = Clock::now();
 
-  std::vector<uint64_t> zBuffer(size_t(width) * size_t(height), kEmpty);
+  LatticeBuffer zBuffer(destination);
+  const int stride = zBuffer.stride();
   std::atomic<uint64_t> rasterized{0}, tested{0};
   const uint32_t pointCount = source.pixelVertexCount();
 
   // Points: every pixel in the point warp; in the mesh warp, orphans
   // compete with the triangles and the other vertices only fill gaps.
-  std::vector<uint64_t> gapBuffer(method == WarpMethod::Mesh ? zBuffer.size() : 0, kEmpty);
+  std::optional<LatticeBuffer> gapBuffer;
+  if (method == WarpMethod::Mesh) gapBuffer.emplace(destination);
   tbb::parallel_for(tbb::blocked_range<uint32_t>(0, pointCount, 4096), [&](const tbb::blocked_range<uint32_t>& r) {
     for (uint32_t v = r.begin(); v != r.end(); ++v) {
       const bool competes = method == WarpMethod::Point || source.orphan(v);
-      splatPoint(projected[v], v, width, height, equirect, competes ? zBuffer : gapBuffer);
+      splatPoint(projected[v], v, width, height, equirect, competes ? zBuffer : *gapBuffer);
     }
   });
 
@@ -650,25 +686,25 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
           if (range.x0 > range.x1 || range.y0 > range.y1) continue;
           const SphericalTriangle triangle(v, source.atInfinity(indices[0]));
           if (triangle.degenerate()) continue;
+          // Columns are unwrapped, a whole turn (a multiple of the stride) apart.
           const auto scanRow = [&](int y, int first, int last) {
-            for (int column = first; column <= last; ++column) {
+            first = zBuffer.firstOnLattice(first);
+            if (first <= last) localTested += uint64_t((last - first) / stride + 1);
+            for (int column = first; column <= last; column += stride) {
               const int x = column < 0 ? column + width : column >= width ? column - width : column;
               if (!triangle.covers(directions->at(x, y), coverage)) continue;
-              atomicMin(zBuffer[size_t(y) * size_t(width) + size_t(x)],
-                        makeKey(distanceFromInverse(coverage.inverseDistance), payload));
+              atomicMin(zBuffer.at(x, y), makeKey(distanceFromInverse(coverage.inverseDistance), payload));
             }
           };
+          const int firstRow = zBuffer.firstOnLattice(range.y0);
           if (raster == PanoramaRaster::RowSpans && range.x1 - range.x0 + 1 >= kRowSpanMinimumColumns) {
             const RowSpans spans(triangle, *directions, range);
-            for (int y = range.y0; y <= range.y1; ++y) {
+            for (int y = firstRow; y <= range.y1; y += stride) {
               int first, last;
-              if (!spans.span(y, first, last)) continue;
-              localTested += uint64_t(last - first + 1);
-              scanRow(y, first, last);
+              if (spans.span(y, first, last)) scanRow(y, first, last);
             }
           } else {
-            localTested += uint64_t(range.x1 - range.x0 + 1) * uint64_t(range.y1 - range.y0 + 1);
-            for (int y = range.y0; y <= range.y1; ++y) scanRow(y, range.x0, range.x1);
+            for (int y = firstRow; y <= range.y1; y += stride) scanRow(y, range.x0, range.x1);
           }
         } else {
           const PlanarTriangle triangle(v);
@@ -679,8 +715,7 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
           for (int y = range.y0; y <= range.y1; ++y) {
             for (int x = range.x0; x <= range.x1; ++x) {
               if (!triangle.covers(x, y, coverage)) continue;
-              atomicMin(zBuffer[size_t(y) * size_t(width) + size_t(x)],
-                        makeKey(distanceFromInverse(coverage.inverseDistance), payload));
+              atomicMin(zBuffer.at(x, y), makeKey(distanceFromInverse(coverage.inverseDistance), payload));
             }
           }
         }
@@ -692,20 +727,24 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
   timings.rasterSeconds = secondsSince(stageStart);
   stageStart = Clock::now();
 
-  // Resolve: interpolate the winner's attributes at each pixel centre.
+  // Resolve: interpolate the winner's attributes at each pixel centre of the lattice.
+  const int layerWidth = destination.layerWidth(), layerHeight = destination.layerHeight();
+  const size_t layerPixels = size_t(layerWidth) * size_t(layerHeight);
   WarpLayer layer{
-      ColorImage(width, height),
-      ScalarImage(width, height, std::numeric_limits<float>::infinity()),
-      std::vector<uint8_t>(size_t(width) * size_t(height), 0),
+      ColorImage(layerWidth, layerHeight),
+      ScalarImage(layerWidth, layerHeight, std::numeric_limits<float>::infinity()),
+      std::vector<uint8_t>(layerPixels, 0),
       rasterized.load(),
       tested.load(),
       WarpTimings{},
-      std::vector<float>(reliability == LayerReliability::Computed ? size_t(width) * size_t(height) : 0, 1.0f)};
-  tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
-    for (int y = rows.begin(); y != rows.end(); ++y) {
-      for (int x = 0; x < width; ++x) {
-        const size_t i = size_t(y) * size_t(width) + size_t(x);
-        const uint64_t key = zBuffer[i] != kEmpty || gapBuffer.empty() ? zBuffer[i] : gapBuffer[i];
+      std::vector<float>(reliability == LayerReliability::Computed ? layerPixels : 0, 1.0f)};
+  tbb::parallel_for(tbb::blocked_range<int>(0, layerHeight), [&](const tbb::blocked_range<int>& rows) {
+    for (int row = rows.begin(); row != rows.end(); ++row) {
+      const int y = row * stride;
+      for (int x = 0; x < width; x += stride) {
+        const size_t i = size_t(row) * size_t(layerWidth) + size_t(x / stride);
+        const uint64_t key =
+            zBuffer.at(x, y) != kEmpty || !gapBuffer ? zBuffer.at(x, y) : gapBuffer->at(x, y);
         if (key == kEmpty) continue;
         const uint32_t payload = uint32_t(key & 0xFFFFFFFFu);
         layer.covered[i] = 1;

@@ -171,18 +171,29 @@ inline void WarpSource::triangleVertices(uint32_t triangle, uint32_t vertices[3]
 }
 
 // A destination camera: an equirectangular panorama at a position, or a
-// pinhole camera.
+// pinhole camera. A panorama may be warped on a lattice of its pixels:
+// every stride-th row and column, pixel (x, y) of the layer being pixel
+// (stride x, stride y) of the panorama, with exactly the values the whole
+// panorama's warp has there (the same pixel centres, the same tests), for
+// errors estimated on a quarter of the pixels at the same resolution.
 struct DestinationCamera {
   enum class Kind { Equirect, Pinhole };
   Kind kind = Kind::Equirect;
   glm::vec3 position{0.0f};
   EquirectProjection equirect;
   PinholeCamera pinhole;
+  int stride = 1;  // panoramas: the lattice's spacing in pixels, dividing the width and the height
 
   static DestinationCamera panorama(glm::vec3 position, int width, int height, float yawRadians = 0.0f);
+  // The lattice of every stride-th pixel of a width x height panorama.
+  static DestinationCamera panoramaLattice(glm::vec3 position, int width, int height, int stride,
+                                           float yawRadians = 0.0f);
   static DestinationCamera camera(const PinholeCamera& pinhole);
   int width() const { return kind == Kind::Equirect ? equirect.width : pinhole.width; }
   int height() const { return kind == Kind::Equirect ? equirect.height : pinhole.height; }
+  // The warped layer's size: the lattice's.
+  int layerWidth() const { return width() / stride; }
+  int layerHeight() const { return height() / stride; }
 };
 
 // What one source contributes to the destination.
@@ -193,6 +204,7 @@ struct WarpTimings {
   double resolveSeconds = 0.0;
 };
 
+// A layer holds destination.layerWidth() x layerHeight() pixels.
 struct WarpLayer {
   ColorImage color;           // linear
   ScalarImage distance;       // metres from the destination centre; +inf = sky

@@ -18,7 +18,7 @@ void registerBenchCommand(CLI::App& app) {
     std::vector<std::string> only;
     std::string gl = "auto";
     int captureViews = 20;
-    int decimationWidth = 256;
+    BenchSelectionErrors decimationErrors;
     std::string dataset, selection;
   };
   auto arguments = std::make_shared<Arguments>();
@@ -36,9 +36,14 @@ void registerBenchCommand(CLI::App& app) {
                    "Panoramas rendered for the capture figure (at least 8: the end-to-end figure captures paths of 4)")
       ->capture_default_str()
       ->check(CLI::Range(8, 100000));
-  command->add_option("--decimation-width", arguments->decimationWidth, "Panorama width decimation works at")
+  command->add_option("--decimation-width", arguments->decimationErrors.width, "Panorama width decimation works at")
       ->capture_default_str()
       ->check(CLI::IsMember({64, 128, 256, 512, 1024}));
+  command
+      ->add_option("--decimation-error-stride", arguments->decimationErrors.stride,
+                   "The decimation's errors on every N-th row and column (decimate's --error-stride)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({1, 2, 4}));
   command->add_option("--dataset", arguments->dataset,
                       "Data set for the decimation figures (default: capture the default one first)");
   command->add_option("--selection", arguments->selection, "Selection for the viewer figure (default: all samples)");
@@ -55,15 +60,15 @@ void registerBenchCommand(CLI::App& app) {
     }
     if (selected("region")) benchRegion(table, "/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc");
     if (selected("decimate")) {
-      benchDecimate(table, loadSceneDescription(builtinScenePath()), arguments->dataset, arguments->decimationWidth);
+      benchDecimate(table, loadSceneDescription(builtinScenePath()), arguments->dataset, arguments->decimationErrors);
     }
     // Two captures and decimations, about half an hour here: only when asked.
     if (only.count("scaling")) {
-      benchScaling(table, loadSceneDescription(builtinScenePath()), arguments->decimationWidth);
+      benchScaling(table, loadSceneDescription(builtinScenePath()), arguments->decimationErrors);
     }
     if (selected("warp") || selected("render")) {
       const BenchViews views = captureBenchViews();
-      if (selected("warp")) benchWarp(table, views, arguments->decimationWidth);
+      if (selected("warp")) benchWarp(table, views, arguments->decimationErrors.width);
       if (selected("render")) benchRender(table, views, 60);
     }
     if (selected("viewer")) {

@@ -36,13 +36,15 @@ double peakResidentGigabytes() {
 
 }  // namespace
 
-BenchDecimation runBenchDecimation(const Dataset& dataset, int errorWidth) {
+std::string BenchSelectionErrors::describe() const { return describeErrorPanorama(width, stride); }
+
+BenchDecimation runBenchDecimation(const Dataset& dataset, const BenchSelectionErrors& errorChoice) {
   BenchDecimation result;
   result.peakIsOwn = resetPeakResident();
   TriangleErrorSettings settings;
-  settings.width = errorWidth;
+  settings.width = errorChoice.width;
+  settings.stride = errorChoice.stride;
   settings.synthesis = withSelectionDefaults(settings.synthesis);  // as decimate prices collapses
-  settings.stride = kSelectionErrorStride;
   const auto loadStart = BenchClock::now();
   // Progress on stderr (minutes of work); the table goes to stdout.
   constexpr bool kQuiet = false;
@@ -60,7 +62,8 @@ BenchDecimation runBenchDecimation(const Dataset& dataset, int errorWidth) {
   return result;
 }
 
-void benchDecimate(BenchTable& table, const Scene& scene, const std::string& datasetDirectory, int errorWidth) {
+void benchDecimate(BenchTable& table, const Scene& scene, const std::string& datasetDirectory,
+                   const BenchSelectionErrors& errors) {
   std::optional<TemporaryCapture> capture;
   std::filesystem::path directory = datasetDirectory;
   if (directory.empty()) {
@@ -72,8 +75,8 @@ void benchDecimate(BenchTable& table, const Scene& scene, const std::string& dat
   const Dataset dataset = Dataset::open(directory);
   const std::string size = std::to_string(dataset.sampleCount()) + " samples " +
                            std::to_string(dataset.manifest().width) + "x" + std::to_string(dataset.manifest().height) +
-                           ", errors at " + std::to_string(errorWidth) + "x" + std::to_string(errorWidth / 2);
-  const BenchDecimation decimation = runBenchDecimation(dataset, errorWidth);
+                           ", " + errors.describe();
+  const BenchDecimation decimation = runBenchDecimation(dataset, errors);
   const SelectionRun& run = decimation.run;
   const DecimationStatistics& statistics = run.statistics;
   const RefinementResult& refinement = run.refinement;

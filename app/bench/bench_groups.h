@@ -6,6 +6,7 @@
 #include "core/image/image.h"
 #include "core/io/dataset.h"
 #include "core/selection/reference_selection.h"
+#include "core/selection/triangle_error.h"
 #include "render/scene/scene.h"
 
 #include <chrono>
@@ -33,12 +34,21 @@ void benchRender(BenchTable& table, const BenchViews& views, int frames);
 void benchViewer(BenchTable& table, const Dataset& dataset, const std::string& selection, int frames);
 // The automatic walkable region of an imported scene (the FZK house).
 void benchRegion(BenchTable& table, const std::filesystem::path& scenePath);
+// The errors the decimation figures select with: decimate's --error-width
+// and --error-stride.
+struct BenchSelectionErrors {
+  int width = kDefaultErrorWidth;
+  int stride = kSelectionErrorStride;
+  std::string describe() const;  // "errors at 256x128", and the lattice if any
+};
+
 // datasetDirectory empty: captures the default data set first.
-void benchDecimate(BenchTable& table, const Scene& scene, const std::string& datasetDirectory, int errorWidth);
+void benchDecimate(BenchTable& table, const Scene& scene, const std::string& datasetDirectory,
+                   const BenchSelectionErrors& errors);
 // The decimation of the default capture's lattice and of one with 4x the
 // samples over the same area, both captured at the error width: time and
 // peak memory of each, and their ratios (issue 15's scaling row).
-void benchScaling(BenchTable& table, const Scene& scene, int errorWidth);
+void benchScaling(BenchTable& table, const Scene& scene, const BenchSelectionErrors& errors);
 
 // One decimation as the main job runs it (`decimate --max-error 1.85`):
 // the panoramas loaded at the error width, the collapses, the refinement.
@@ -52,7 +62,7 @@ struct BenchDecimation {
   uint64_t layersWarpedAgain = 0;  // of layersComputed, those the cache had dropped for its budget
   double layerBudgetGigabytes = 0.0;
 };
-BenchDecimation runBenchDecimation(const Dataset& dataset, int errorWidth);
+BenchDecimation runBenchDecimation(const Dataset& dataset, const BenchSelectionErrors& errors);
 
 using BenchClock = std::chrono::steady_clock;
 inline double secondsSince(BenchClock::time_point start) {

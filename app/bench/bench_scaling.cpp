@@ -13,17 +13,17 @@ struct ScalingRun {
 };
 
 // Captures paths x perPath samples at the error width and decimates them.
-ScalingRun decimateCapture(const Scene& scene, int paths, int perPath, int errorWidth) {
+ScalingRun decimateCapture(const Scene& scene, int paths, int perPath, const BenchSelectionErrors& errors) {
   CaptureOptions options;
   options.paths = paths;
   options.perPath = perPath;
-  options.width = errorWidth;  // the decimation reads nothing finer
+  options.width = errors.width;  // the decimation reads nothing finer
   options.probes = 0;
   const TemporaryCapture capture(scene, options, "triwalk-bench-scaling-" + std::to_string(paths * perPath));
   ScalingRun result;
   result.samples = capture.summary().samples;
   result.captureSeconds = capture.summary().seconds;
-  result.decimation = runBenchDecimation(Dataset::open(capture.directory()), errorWidth);
+  result.decimation = runBenchDecimation(Dataset::open(capture.directory()), errors);
   return result;
 }
 
@@ -33,16 +33,16 @@ std::string ratio(double to, double from) {
 
 }  // namespace
 
-void benchScaling(BenchTable& table, const Scene& scene, int errorWidth) {
-  const std::string widthText = std::to_string(errorWidth) + "x" + std::to_string(errorWidth / 2);
+void benchScaling(BenchTable& table, const Scene& scene, const BenchSelectionErrors& errors) {
+  const std::string widthText = std::to_string(errors.width) + "x" + std::to_string(errors.width / 2);
   // The default capture's lattice (30 paths x 15), and twice as many paths
   // and samples along each over the same area: 4x the samples at half the
   // spacing, as a denser capture of the same scene would be.
-  const ScalingRun runs[2] = {decimateCapture(scene, 30, 15, errorWidth), decimateCapture(scene, 60, 30, errorWidth)};
+  const ScalingRun runs[2] = {decimateCapture(scene, 30, 15, errors), decimateCapture(scene, 60, 30, errors)};
   for (const ScalingRun& scaling : runs) {
     const SelectionRun& run = scaling.decimation.run;
     table.add({"decimation, " + std::to_string(scaling.samples) + " samples: collapses / refinement",
-               std::to_string(scaling.samples) + " samples " + widthText + ", errors at " + widthText,
+               std::to_string(scaling.samples) + " samples " + widthText + ", " + errors.describe(),
                formatNumber(run.collapseSeconds, 1) + " s / " + formatNumber(run.refinementSeconds, 1) + " s",
                "peak " + formatNumber(scaling.decimation.peakGigabytes, 2) + " GiB (warped-layer cache budget " +
                    formatNumber(scaling.decimation.layerBudgetGigabytes, 1) + " GiB; layers warped " +

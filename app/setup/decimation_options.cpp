@@ -36,11 +36,7 @@ void applyErrorStride(const SelectionArguments& arguments, TriangleErrorSettings
 }
 
 std::string describeErrorSettings(const TriangleErrorSettings& settings) {
-  const std::string lattice =
-      settings.stride == 1   ? std::string()
-      : settings.stride == 2 ? std::string(" (every other row and column)")
-                             : " (every " + std::to_string(settings.stride) + "th row and column)";
-  return "errors at " + std::to_string(settings.width) + "x" + std::to_string(settings.width / 2) + lattice + ", " +
+  return describeErrorPanorama(settings.width, settings.stride) + ", " +
          (settings.destinations == TriangleDestinations::Centroid     ? "centroid"
           : settings.destinations == TriangleDestinations::Quadrature ? "quadrature"
                                                                        : "interior") +

@@ -19,6 +19,13 @@ int errorWidthFor(const Dataset& dataset, int requested) {
   return width;
 }
 
+std::string describeErrorPanorama(int width, int stride) {
+  const std::string lattice = stride == 1   ? std::string()
+                              : stride == 2 ? std::string(" (every other row and column)")
+                                            : " (every " + std::to_string(stride) + "th row and column)";
+  return "errors at " + std::to_string(width) + "x" + std::to_string(width / 2) + lattice;
+}
+
 DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const TriangleErrorSettings& settings,
                                              LoadedViews views, bool quiet)
     : dataset_(dataset), settings_(settings), layerCache_(settings.layerCacheBytes.value_or(0)) {

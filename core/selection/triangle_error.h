@@ -21,6 +21,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace triwalk {
@@ -104,6 +105,10 @@ inline constexpr int kSelectionErrorStride = 1;
 // are applied, by decimate's and the suite's option defaults, the viewer's
 // live decimation and bench decimate alike.
 SynthesisOptions withSelectionDefaults(SynthesisOptions synthesis);
+
+// "errors at 256x128", and "(every other row and column)" on a lattice: how
+// reports name the errors a selection is made or judged with.
+std::string describeErrorPanorama(int width, int stride);
 
 struct TriangleErrorSettings {
   int width = kDefaultErrorWidth;  // panorama width the errors are computed at

@@ -1,7 +1,6 @@
 #include "app/setup/decimation_options.h"
 
 #include "app/setup/option_checks.h"
-#include "core/support/errors.h"
 
 namespace triwalk {
 
@@ -29,10 +28,8 @@ TriangleErrorSettings triangleErrorSettings(const ErrorArguments& arguments, con
 }
 
 void applyErrorStride(const SelectionArguments& arguments, TriangleErrorSettings& settings) {
-  if (arguments.errorStride > 1 && settings.synthesis.holes == HoleMode::Fill) {
-    throw InputError("--error-stride", "a lattice of pixels cannot be hole-filled: use it with --holes black or mark");
-  }
   settings.stride = arguments.errorStride;
+  checkErrorStride(settings);
 }
 
 std::string describeErrorSettings(const TriangleErrorSettings& settings) {

@@ -26,10 +26,7 @@ std::string describeErrorPanorama(int width, int stride) {
   return "errors at " + std::to_string(width) + "x" + std::to_string(width / 2) + lattice;
 }
 
-DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const TriangleErrorSettings& settings,
-                                             LoadedViews views, bool quiet)
-    : dataset_(dataset), settings_(settings), layerCache_(settings.layerCacheBytes.value_or(0)) {
-  dataset.downsamplingFactor(settings.width, "--error-width");
+void checkErrorStride(const TriangleErrorSettings& settings) {
   if (!std::has_single_bit(unsigned(settings.stride)) || (settings.width / 2) % settings.stride != 0) {
     throw InputError("--error-stride", "must be a power of two dividing the error panorama's height (" +
                                            std::to_string(settings.width / 2) + "), not " + std::to_string(settings.stride));
@@ -37,6 +34,13 @@ DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const Trian
   if (settings.stride > 1 && settings.synthesis.holes == HoleMode::Fill) {
     throw InputError("--error-stride", "a lattice of pixels cannot be hole-filled: use it with --holes black or mark");
   }
+}
+
+DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const TriangleErrorSettings& settings,
+                                             LoadedViews views, bool quiet)
+    : dataset_(dataset), settings_(settings), layerCache_(settings.layerCacheBytes.value_or(0)) {
+  dataset.downsamplingFactor(settings.width, "--error-width");
+  checkErrorStride(settings);
   const int samples = dataset.sampleCount();
   const int probes = views == LoadedViews::SamplesAndProbes ? dataset.probeCount() : 0;
   sources_.resize(size_t(samples));

@@ -125,6 +125,11 @@ struct TriangleErrorSettings {
   ErrorOptions error;
 };
 
+// Throws InputError naming --error-stride unless settings.stride is a power
+// of two dividing the error panorama's height, and 1 with the hole fill
+// (which needs every pixel).
+void checkErrorStride(const TriangleErrorSettings& settings);
+
 // Which views DatasetTriangleErrors loads: a selection reads only the
 // samples; the probes are held out for judging one (eval, the suite's
 // evaluation), and on the main job they are a third of the views to load.

@@ -726,7 +726,7 @@ TEST_CASE(
   CHECK(samplesAfter(initial.vertexCount(), loaded.collapses, loaded.collapses.size()) == 5);
 }
 
-TEST_CASE("the selection's errors on a lattice: the whole warp's blend at its pixels; the same selection with 1 and 2 threads") {
+TEST_CASE("the selection's errors on a lattice: the whole warp's blend at its pixels, and the same selection with 1 and 2 threads") {
   const SmallCapture capture;
   const Dataset& dataset = capture.dataset;
   TriangleErrorSettings settings = SmallCapture::errorSettings();

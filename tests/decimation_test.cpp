@@ -339,6 +339,8 @@ TEST_CASE("selection.json round trip, and bad selections name the file and the p
   REQUIRE(loaded.collapses.size() == selection.collapses.size());
   CHECK(loaded.collapses.back().added == selection.collapses.back().added);
   CHECK(loaded.collapses.back().cost == selection.collapses.back().cost);
+  CHECK_FALSE(loaded.errorWidth.has_value());
+  CHECK_FALSE(loaded.errorStride.has_value());
 
   auto edit = [&](const std::function<void(nlohmann::json&)>& change) {
     nlohmann::json document = nlohmann::json::parse(readTextFile(file));
@@ -359,6 +361,28 @@ TEST_CASE("selection.json round trip, and bad selections name the file and the p
       "removes a triangle the mesh does not have");
   testing::requireInputError([&] { readSelection(edit([](nlohmann::json& d) { d["version"] = 2; }), dataset); }, bad,
                              "unknown selection version 2");
+
+  // The error panorama the decimation read, which the viewer goes on with.
+  const Selection lattice = readSelection(edit([](nlohmann::json& d) {
+                                            d["settings"] = {{"error_width", 16}, {"error_stride", 4}};
+                                          }),
+                                          dataset);
+  CHECK(lattice.errorWidth == 16);
+  CHECK(lattice.errorStride == 4);
+  testing::requireInputError(
+      [&] { readSelection(edit([](nlohmann::json& d) { d["settings"] = {{"error_width", 24}}; }), dataset); }, bad,
+      "settings: error_width 24 does not divide the data set's width 32");
+  testing::requireInputError(
+      [&] { readSelection(edit([](nlohmann::json& d) { d["settings"] = {{"error_stride", 3}}; }), dataset); }, bad,
+      "settings: error_stride must be 1, 2 or 4");
+  testing::requireInputError(
+      [&] {
+        readSelection(edit([](nlohmann::json& d) { d["settings"] = {{"error_width", 4}, {"error_stride", 4}}; }), dataset);
+      },
+      bad, "settings: error_stride must be 1, 2 or 4");
+  testing::requireInputError(
+      [&] { readSelection(edit([](nlohmann::json& d) { d["settings"] = {{"error_stride", 2.5}}; }), dataset); }, bad,
+      "field 'settings.error_stride' is not an integer");
   std::ofstream(directory / "broken.json") << "{\"format\": ";
   testing::requireInputError([&] { readSelection(directory / "broken.json", dataset); }, "broken.json", "malformed JSON");
 }

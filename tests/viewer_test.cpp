@@ -1,28 +1,49 @@
 // The viewer, run as a person would start it, under a virtual X server
 // (xvfb-run): a few frames of a small data set, then its screenshot must
-// show the walkthrough and the panels.
+// show the walkthrough and the panels; its live decimation's errors.
 
+#include "core/io/atomic_file.h"
 #include "core/io/png_io.h"
 #include "tests/analytic_scene.h"
 #include "tests/test_support.h"
 
 #include <doctest/doctest.h>
 
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
 #include <cstdlib>
 #include <set>
 
 namespace triwalk {
 
+namespace {
+
+struct ViewerRun {
+  int status;
+  std::string log;
+};
+
+// `triwalk <arguments>` with stdout and stderr in one log; under a
+// virtual X server unless without a display.
+ViewerRun runTriwalk(const testing::TemporaryDirectory& scratch, const std::string& arguments, bool display = true) {
+  const std::filesystem::path log = scratch / "log.txt";
+  const std::string command = std::string(display ? "xvfb-run -a -s '-screen 0 1280x800x24' " : "") + TRIWALK_BINARY + " " +
+                              arguments + " > " + log.string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  return {status, testing::readTextFileOrEmpty(log)};
+}
+
+}  // namespace
+
 TEST_CASE("the viewer under Xvfb shows the scene and its panels") {
   testing::TemporaryDirectory directory;
   testing::writeAnalyticDataset(directory / "data", 4, 3, 256, 1);
   const std::filesystem::path screenshot = directory / "viewer.png";
-  const std::string command = std::string("xvfb-run -a -s '-screen 0 1280x800x24' ") + TRIWALK_BINARY +
-                              " view --dataset " + (directory / "data").string() + " --frames 8 --screenshot " +
-                              screenshot.string() + " > " + (directory / "log.txt").string() + " 2>&1";
-  const int status = std::system(command.c_str());
-  INFO("log: " << testing::readTextFileOrEmpty(directory / "log.txt"));
-  REQUIRE(status == 0);
+  const ViewerRun run =
+      runTriwalk(directory, "view --dataset " + (directory / "data").string() + " --frames 8 --screenshot " + screenshot.string());
+  INFO("log: " << run.log);
+  REQUIRE(run.status == 0);
   REQUIRE(std::filesystem::exists(screenshot));
   const Rgb8Image image = readPng(screenshot);
   CHECK(image.width == 1280);
@@ -46,6 +67,43 @@ TEST_CASE("the viewer under Xvfb shows the scene and its panels") {
     for (int x = 20; x < 420; ++x) mapBackground += image.at(x, y) == glm::u8vec3(25, 25, 30);
   }
   CHECK(mapBackground > 2000);
+}
+
+TEST_CASE("the live decimation goes on on the lattice a selection was made on, unless asked, and bad ones fail early") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 4, 3, 256, 1);
+  const std::string data = " --dataset " + (directory / "data").string();
+  const std::filesystem::path selection = directory / "selection.json";
+  const ViewerRun decimated = runTriwalk(directory, "decimate --quiet --target 6 --refine-radius 0 --error-stride 2" + data +
+                                                       " --out " + selection.string(), false);
+  INFO("decimate: " << decimated.log);
+  REQUIRE(decimated.status == 0);
+  const std::string view = "view" + data + " --selection " + selection.string() + " --frames 2 --screenshot " +
+                           (directory / "viewer.png").string();
+
+  const ViewerRun continued = runTriwalk(directory, view);
+  INFO("view: " << continued.log);
+  REQUIRE(continued.status == 0);
+  CHECK(continued.log.find("live decimation: errors at 256x128 (every other row and column)\n") != std::string::npos);
+  const ViewerRun asked = runTriwalk(directory, view + " --error-stride 1");
+  INFO("view --error-stride 1: " << asked.log);
+  REQUIRE(asked.status == 0);
+  CHECK(asked.log.find("live decimation: errors at 256x128\n") != std::string::npos);
+
+  // Without a display: the option and the selection are checked before a window opens.
+  const ViewerRun badOption = runTriwalk(directory, view + " --error-stride 3", false);
+  CHECK(badOption.status != 0);
+  CHECK(badOption.log.find("--error-stride: 3 not in {1,2,4}") != std::string::npos);
+  CHECK(std::count(badOption.log.begin(), badOption.log.end(), '\n') == 1);
+  nlohmann::json document = nlohmann::json::parse(readTextFile(selection));
+  document["settings"]["error_stride"] = 3;
+  writeTextFileAtomically(directory / "bad.json", document.dump());
+  const ViewerRun badSelection = runTriwalk(
+      directory, "view" + data + " --selection " + (directory / "bad.json").string() + " --frames 2 --screenshot " +
+                     (directory / "viewer.png").string(), false);
+  CHECK(badSelection.status != 0);
+  CHECK(badSelection.log.find("bad.json: settings: error_stride must be 1, 2 or 4") != std::string::npos);
+  CHECK(std::count(badSelection.log.begin(), badSelection.log.end(), '\n') == 1);
 }
 
 }  // namespace triwalk

@@ -29,7 +29,7 @@ DecimationSession::DecimationSession(const Dataset& dataset, const TriangleError
     initial_ = datasetMesh(dataset, {}, dataset.manifestPath().string()).triangles();
   }
   initialSamples_ = ViewMesh(samplePositions(dataset), initial_).vertexCount();
-  publish("loading panoramas for the error at " + std::to_string(settings.width) + "x" + std::to_string(settings.width / 2));
+  publish("loading panoramas for the " + describeErrorPanorama(settings.width, settings.stride));
   thread_ = std::thread([this] { worker(); });
   loader_ = std::thread([this] { loadErrors(); });
 }
@@ -293,6 +293,8 @@ Selection DecimationSession::selection() const {
   selection.collapses.assign(log_.begin(), log_.begin() + current.step);
   selection.stopReason = "saved from the viewer at step " + std::to_string(current.step);
   selection.nextCost = current.nextCost;
+  // So that the viewer continues the saved selection on the same pixels.
+  selection.settings = {{"error_width", settings_.width}, {"error_stride", settings_.stride}};
   return selection;
 }
 

@@ -14,7 +14,7 @@ void registerViewCommand(CLI::App& app) {
   struct Arguments {
     std::string dataset, selection, size = "1280x720", screenshot, path;
     int frames = 0;
-    int errorWidth = 0;
+    int errorWidth = 0, errorStride = 0;
     size_t cacheMegabytes = 1024;
     QualityArguments quality;
   };
@@ -25,9 +25,14 @@ void registerViewCommand(CLI::App& app) {
                       "Selection to walk through and step (default: the dense triangulation, to decimate here)");
   command->add_option("--size", arguments->size, "Window size WIDTHxHEIGHT")->capture_default_str();
   command->add_option("--cache-mb", arguments->cacheMegabytes, "Memory for resident panoramas, MiB")->capture_default_str();
-  command->add_option("--error-width", arguments->errorWidth, "Panorama width of the decimation's errors (default: the largest "
-                      "width not above " + std::to_string(kDefaultErrorWidth) + " that divides the data set's)")
+  command->add_option("--error-width", arguments->errorWidth, "Panorama width of the decimation's errors (default: the "
+                      "selection's, else the largest width not above " + std::to_string(kDefaultErrorWidth) +
+                      " that divides the data set's)")
       ->check(nonNegativeNumber());
+  command->add_option("--error-stride", arguments->errorStride, "Compute the decimation's errors on every N-th row and "
+                      "column of the error panorama, as decimate's --error-stride (2: about 2.6x the collapses a "
+                      "second, at a measured cost in quality: docs/RESULTS.md); default: the selection's, else 1")
+      ->check(CLI::IsMember({1, 2, 4}));
   command->add_option("--frames", arguments->frames, "Render this many frames, write --screenshot and exit");
   command->add_option("--screenshot", arguments->screenshot, "With --frames: PNG of the window at the last frame")->check(writableFile());
   command->add_option("--path", arguments->path, "With --frames: camera path file (x y z yaw pitch a line)");
@@ -43,6 +48,7 @@ void registerViewCommand(CLI::App& app) {
     parseSize(a.size, "--size", options.width, options.height);
     options.cacheBytes = a.cacheMegabytes << 20;
     options.errorWidth = a.errorWidth;
+    options.errorStride = a.errorStride;
     options.synthesis = synthesisOptions(a.quality);
     options.frames = a.frames;
     options.screenshot = a.screenshot;

@@ -51,20 +51,36 @@ glm::vec3 startPosition(const ViewMesh& mesh, float eye) {
   return glm::vec3(glm::vec2(mesh.contains(t, middle) ? middle : mesh.centroid(t)), eye);
 }
 
+// The errors the live decimation computes. --holes, --source-mesh and
+// --blend-weights choose what the walker sees; the errors are decimate's
+// defaults, so that its steps match the command's, on the error panorama
+// a continued selection was made on (a decimation on a lattice goes on on
+// that lattice) unless asked otherwise.
+TriangleErrorSettings liveErrorSettings(const ViewerOptions& options, const Dataset& dataset,
+                                        const std::optional<Selection>& selection) {
+  const int madeWidth = selection ? selection->errorWidth.value_or(0) : 0;  // 0: errorWidthFor's default
+  const int madeStride = selection ? selection->errorStride.value_or(kSelectionErrorStride) : kSelectionErrorStride;
+  TriangleErrorSettings settings;
+  settings.width = errorWidthFor(dataset, options.errorWidth > 0 ? options.errorWidth : madeWidth);
+  settings.synthesis = withSelectionDefaults(options.synthesis);
+  settings.stride = options.errorStride > 0 ? options.errorStride : madeStride;
+  checkErrorStride(settings);
+  return settings;
+}
+
 class Viewer {
 public:
+  // The data set, the selection and the errors are read before the window
+  // opens, so that bad input fails without a display.
   explicit Viewer(const ViewerOptions& options)
-      : options_(options), context_(options.width, options.height, "triwalk"), dataset_(Dataset::open(options.dataset)) {
-    std::optional<Selection> selection;
-    if (!options.selection.empty()) selection = readSelection(options.selection, dataset_);
-    TriangleErrorSettings errorSettings;
-    errorSettings.width = errorWidthFor(dataset_, options.errorWidth);
-    // --holes, --source-mesh and --blend-weights choose what the walker
-    // sees; live decimation measures its errors as decimate does by
-    // default, so its steps match the command's.
-    errorSettings.synthesis = withSelectionDefaults(options.synthesis);
-    errorSettings.stride = kSelectionErrorStride;
-    session_ = std::make_unique<DecimationSession>(dataset_, errorSettings, DecimationOptions{}, selection);
+      : options_(options), dataset_(Dataset::open(options.dataset)),
+        selection_(options.selection.empty() ? std::nullopt
+                                             : std::optional<Selection>(readSelection(options.selection, dataset_))),
+        errorSettings_(liveErrorSettings(options, dataset_, selection_)),
+        context_(options.width, options.height, "triwalk") {
+    std::printf("live decimation: %s\n", describeErrorPanorama(errorSettings_.width, errorSettings_.stride).c_str());
+    std::fflush(stdout);
+    session_ = std::make_unique<DecimationSession>(dataset_, errorSettings_, DecimationOptions{}, selection_);
     state_.dataset = &dataset_;
     state_.session = session_.get();
     state_.snapshot = session_->snapshot();
@@ -276,8 +292,10 @@ private:
   }
 
   ViewerOptions options_;
-  GlfwWindowContext context_;
   Dataset dataset_;
+  std::optional<Selection> selection_;
+  TriangleErrorSettings errorSettings_;
+  GlfwWindowContext context_;
   std::unique_ptr<DecimationSession> session_;
   WarpOptions warpOptions_;
   std::unique_ptr<PanoramaCache> cache_;

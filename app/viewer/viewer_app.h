@@ -15,7 +15,11 @@ struct ViewerOptions {
   std::filesystem::path selection;  // empty: start from the dense triangulation
   int width = 1280, height = 720;
   size_t cacheBytes = size_t(1) << 30;
-  int errorWidth = 0;  // 0: the largest width not above kDefaultErrorWidth that divides the data set's
+  // The live decimation's error panorama; 0: the selection's, if it says,
+  // else decimate's defaults (the largest width not above
+  // kDefaultErrorWidth that divides the data set's, every pixel).
+  int errorWidth = 0;
+  int errorStride = 0;
   SynthesisOptions synthesis;
   // Scripted use: render this many frames (along the path, if any), write
   // a screenshot of the window and exit.

@@ -117,7 +117,27 @@ Selection readSelection(const std::filesystem::path& path, const Dataset& datase
   selection.method = root.string("method");
   selection.stopReason = root.stringOr("stop_reason", "");
   selection.nextCost = root.numberOr("next_cost", std::numeric_limits<double>::infinity());
-  if (root.has("settings")) selection.settings = root.object("settings").json();
+  if (root.has("settings")) {
+    const JsonObject settings = root.object("settings");
+    selection.settings = settings.json();
+    if (settings.has("error_width")) {
+      const int width = settings.integer("error_width");
+      if (width <= 0 || dataset.largestWidthAtMost(width) != width) {
+        settings.fail("error_width " + std::to_string(width) + " does not divide the data set's width " +
+                      std::to_string(dataset.manifest().width));
+      }
+      selection.errorWidth = width;
+    }
+    if (settings.has("error_stride")) {
+      const int stride = settings.integer("error_stride");
+      const bool dividesHeight = !selection.errorWidth || (*selection.errorWidth / 2) % stride == 0;
+      if ((stride != 1 && stride != 2 && stride != 4) || !dividesHeight) {
+        settings.fail("error_stride must be 1, 2 or 4 and divide the error panorama's height, not " +
+                      std::to_string(stride));
+      }
+      selection.errorStride = stride;
+    }
+  }
   const nlohmann::json& samples = root.array("samples");
   std::set<int> kept;
   for (size_t i = 0; i < samples.size(); ++i) {

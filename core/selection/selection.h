@@ -29,6 +29,7 @@
 #include <span>
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,10 @@ struct Selection {
   std::string stopReason;
   double nextCost = 0.0;
   nlohmann::json settings = nlohmann::json::object();
+  // The error panorama the decimation read (the settings' error_width and
+  // error_stride), where the file says: the viewer continues a decimation
+  // on the same pixels.
+  std::optional<int> errorWidth, errorStride;
 };
 
 // Writes atomically.

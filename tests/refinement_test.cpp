@@ -7,6 +7,7 @@
 #include "core/image/color.h"
 #include "core/io/atomic_file.h"
 #include "core/io/dataset.h"
+#include "core/selection/reference_selection.h"
 #include "core/selection/selection.h"
 #include "core/selection/selection_refinement.h"
 #include "core/selection/triangle_error.h"
@@ -773,6 +774,44 @@ TEST_CASE("the selection's errors on a lattice: the whole warp's blend at its pi
   const DecimatedAndRefined second = decimateAndRefine(dataset, lattice, 2);
   REQUIRE(first.log.size() >= 10);
   checkSameSelection(first, second);
+}
+
+TEST_CASE("the viewer's decimator takes decimate's steps: the samples weighed by their area, the region serving them") {
+  const SmallCapture capture;
+  const Dataset& dataset = capture.dataset;
+  TriangleErrorSettings errorSettings = SmallCapture::errorSettings();
+  errorSettings.synthesis = withSelectionDefaults(errorSettings.synthesis);
+  DatasetTriangleErrors errors(dataset, errorSettings, LoadedViews::Samples, true);
+  SelectionSettings settings;
+  settings.decimation.maxError = 0.0;
+  settings.decimation.targetSamples = 4;
+  settings.refinement.radius = 0.0;
+  const SelectionRun decimate = selectReferences(dataset, errors, settings, true);
+  REQUIRE(decimate.collapses == 11);
+
+  const std::vector<Triangle> dense = datasetMesh(dataset, {}, "test").triangles();
+  CachingReconstructionErrors sampleErrors(errors);
+  const std::unique_ptr<EdgeCollapseDecimator> viewer =
+      datasetDecimator(dataset, dense, DecimationErrors{&errors, &sampleErrors}, settings.decimation);
+  viewer->run();
+  const std::vector<Collapse>& steps = viewer->log();
+  REQUIRE(steps.size() == decimate.selection.collapses.size());
+  for (size_t i = 0; i < steps.size(); ++i) {
+    CAPTURE(i);
+    CHECK(steps[i].first == decimate.selection.collapses[i].first);
+    CHECK(steps[i].placement == decimate.selection.collapses[i].placement);
+    CHECK(steps[i].cost == decimate.selection.collapses[i].cost);
+  }
+
+  // What the viewer did before: every sample weighing alike, no region.
+  // Its costs are not decimate's (the grid's edge samples stand for half
+  // the area of its inner ones), so the comparison above can fail.
+  EdgeCollapseDecimator unweighted(ViewMesh(samplePositions(dataset), dense), DecimationErrors{&errors, &sampleErrors},
+                                   settings.decimation);
+  unweighted.run();
+  bool differs = unweighted.log().size() != steps.size();
+  for (size_t i = 0; !differs && i < steps.size(); ++i) differs = unweighted.log()[i].cost != steps[i].cost;
+  CHECK(differs);
 }
 
 TEST_CASE("the warped-layer cache's budget changes how many layers are warped, never the selection") {

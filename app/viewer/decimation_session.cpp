@@ -2,6 +2,7 @@
 
 #include "core/image/color.h"
 #include "core/io/png_io.h"
+#include "core/selection/reference_selection.h"
 #include "core/support/progress.h"
 
 #include <algorithm>
@@ -117,9 +118,8 @@ void DecimationSession::ensureErrors() {
 void DecimationSession::ensureDecimator() {
   ensureErrors();
   if (decimator_ && decimatorStep_ == step_) return;
-  const ViewMesh mesh(samplePositions(dataset_), replayForward(initial_, log_, size_t(step_)));
-  decimator_ = std::make_unique<EdgeCollapseDecimator>(mesh, DecimationErrors{cachedErrors_.get(), cachedSampleErrors_.get()},
-                                                       options_);
+  decimator_ = datasetDecimator(dataset_, replayForward(initial_, log_, size_t(step_)),
+                                DecimationErrors{cachedErrors_.get(), cachedSampleErrors_.get()}, options_);
   decimatorStep_ = step_;
 }
 

@@ -20,6 +20,17 @@ double meanTriangleError(TriangleErrorSource& errors, const std::vector<Triangle
   return std::accumulate(values.begin(), values.end(), 0.0) / double(values.size());
 }
 
+std::vector<double> selectionSampleWeights(const Dataset& dataset) {
+  return sampleAreaWeights(samplePositions(dataset), dataset.walkableRegion());
+}
+
+std::unique_ptr<EdgeCollapseDecimator> datasetDecimator(const Dataset& dataset, std::vector<Triangle> triangles,
+                                                        DecimationErrors errors, DecimationOptions options,
+                                                        ProgressReporter* costing) {
+  options.sampleWeights = selectionSampleWeights(dataset);
+  return std::make_unique<EdgeCollapseDecimator>(datasetTriangles(dataset, std::move(triangles)), errors, options, costing);
+}
+
 SelectionRun selectReferences(const Dataset& dataset, DatasetTriangleErrors& errors, const SelectionSettings& requested,
                               bool quiet) {
   SelectionRun run;
@@ -27,11 +38,7 @@ SelectionRun selectReferences(const Dataset& dataset, DatasetTriangleErrors& err
   SelectionSettings settings = requested;
   const WalkableRegion region = dataset.walkableRegion();
   settings.refinement.region = &region;
-  if (settings.areaWeights) {
-    const std::vector<double> weights = sampleAreaWeights(initial.positions(), region);
-    settings.decimation.sampleWeights = weights;
-    settings.refinement.sampleWeights = weights;
-  }
+  settings.refinement.sampleWeights = selectionSampleWeights(dataset);
   run.initialSamples = initial.vertexCount();
   if (settings.relativeError > 0.0) {
     run.denseMeanError = meanTriangleError(errors, initial.triangles(), quiet);
@@ -43,21 +50,22 @@ SelectionRun selectReferences(const Dataset& dataset, DatasetTriangleErrors& err
   CachingReconstructionErrors sampleErrors(errors);
   const auto start = std::chrono::steady_clock::now();
   ProgressReporter costing("cost every edge", 0, quiet);
-  EdgeCollapseDecimator decimator(initial, DecimationErrors{&errors, &sampleErrors}, settings.decimation, &costing);
+  const std::unique_ptr<EdgeCollapseDecimator> decimator =
+      datasetDecimator(dataset, initial.triangles(), DecimationErrors{&errors, &sampleErrors}, settings.decimation, &costing);
   costing.finish();
   run.costingSeconds = costing.elapsedSeconds();
   const int target = settings.decimation.targetSamples;
   const size_t expected = target > 0 ? size_t(std::max(0, initial.vertexCount() - target)) : 0;
   ProgressReporter progress("collapse", expected, quiet);
-  run.stopReason = decimator.run(&progress);
+  run.stopReason = decimator->run(&progress);
   progress.finish();
   if (run.stopReason == StopReason::Interrupted) throw Interrupted();
   run.collapseSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  run.statistics = decimator.statistics();
-  run.collapses = decimator.log().size();
+  run.statistics = decimator->statistics();
+  run.collapses = decimator->log().size();
 
   ProgressReporter refining("refine: move references", 0, quiet || settings.refinement.radius == 0.0);
-  run.refinement = refineSelection(initial.positions(), decimator.mesh().triangles(), sampleErrors, settings.refinement,
+  run.refinement = refineSelection(initial.positions(), decimator->mesh().triangles(), sampleErrors, settings.refinement,
                                    &refining);
   refining.finish();
   run.refinementSeconds = refining.elapsedSeconds();
@@ -68,10 +76,10 @@ SelectionRun selectReferences(const Dataset& dataset, DatasetTriangleErrors& err
   selection.samples = final.vertices();
   selection.triangles = final.triangles();
   selection.initialTriangles = initial.triangles();
-  selection.collapses = decimator.log();
+  selection.collapses = decimator->log();
   selection.collapses.insert(selection.collapses.end(), run.refinement.moves.begin(), run.refinement.moves.end());
   selection.stopReason = stopReasonName(run.stopReason);
-  selection.nextCost = run.stopReason == StopReason::MaxError ? decimator.lowestRefusedError() : decimator.nextCost();
+  selection.nextCost = run.stopReason == StopReason::MaxError ? decimator->lowestRefusedError() : decimator->nextCost();
   return run;
 }
 

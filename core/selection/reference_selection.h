@@ -10,6 +10,9 @@
 #include "core/selection/selection_refinement.h"
 #include "core/selection/triangle_error.h"
 
+#include <memory>
+#include <vector>
+
 namespace triwalk {
 
 // The quality target when none is given: stop before a collapse whose
@@ -25,9 +28,6 @@ struct SelectionSettings {
   // nothing across scenes whose lighting and texture differ.
   double relativeError = 0.0;
   RefinementOptions refinement;
-  // Weigh each dense sample by its share of the walkable region (see
-  // sampleAreaWeights) in the served-sample cost and the refinement.
-  bool areaWeights = true;
 };
 
 struct SelectionRun {
@@ -47,6 +47,21 @@ struct SelectionRun {
 // The mean error of triangles (unweighted, as Table 1's mean error column),
 // in chunks with progress; stops on Ctrl-C (Interrupted).
 double meanTriangleError(TriangleErrorSource& errors, const std::vector<Triangle>& triangles, bool quiet);
+
+// Each dense sample's share of the data set's walkable region
+// (sampleAreaWeights): what the selection's served-sample cost and
+// refinement weigh samples by, so that sums over samples estimate the
+// walkthrough area's error.
+std::vector<double> selectionSampleWeights(const Dataset& dataset);
+
+// A decimator from triangles of the data set's samples, set up as
+// selectReferences sets up its own: the walkable region serves the samples
+// outside every triangle, and the samples weigh their share of it. From the
+// dense triangulation it takes decimate's steps; the viewer's live
+// decimation is built here so that they agree.
+std::unique_ptr<EdgeCollapseDecimator> datasetDecimator(const Dataset& dataset, std::vector<Triangle> triangles,
+                                                        DecimationErrors errors, DecimationOptions options,
+                                                        ProgressReporter* costing = nullptr);
 
 // errors: the data set's panoramas at the error width.
 SelectionRun selectReferences(const Dataset& dataset, DatasetTriangleErrors& errors, const SelectionSettings& settings,

@@ -341,6 +341,7 @@ TEST_CASE("selection.json round trip, and bad selections name the file and the p
   CHECK(loaded.collapses.back().cost == selection.collapses.back().cost);
   CHECK_FALSE(loaded.errorWidth.has_value());
   CHECK_FALSE(loaded.errorStride.has_value());
+  CHECK_FALSE(loaded.decimation.has_value());
 
   auto edit = [&](const std::function<void(nlohmann::json&)>& change) {
     nlohmann::json document = nlohmann::json::parse(readTextFile(file));
@@ -383,6 +384,48 @@ TEST_CASE("selection.json round trip, and bad selections name the file and the p
   testing::requireInputError(
       [&] { readSelection(edit([](nlohmann::json& d) { d["settings"] = {{"error_stride", 2.5}}; }), dataset); }, bad,
       "field 'settings.error_stride' is not an integer");
+
+  // The collapse options, every one away from its default, and a file
+  // that predates some of them.
+  DecimationOptions made;
+  made.oneRingCandidates = true;
+  made.cost = CollapseCost::Centroid;
+  made.fixedBoundary = true;
+  made.areaWeightedCost = false;
+  made.pricedSamples = 7;
+  made.lazyRecosting = false;
+  const Selection options = readSelection(edit([&](nlohmann::json& d) { d["settings"] = describeDecimationOptions(made); }), dataset);
+  REQUIRE(options.decimation.has_value());
+  CHECK(options.decimation->oneRingCandidates);
+  CHECK(options.decimation->cost == CollapseCost::Centroid);
+  CHECK(options.decimation->fixedBoundary);
+  CHECK_FALSE(options.decimation->areaWeightedCost);
+  CHECK(options.decimation->pricedSamples == 7);
+  CHECK_FALSE(options.decimation->lazyRecosting);
+  const Selection older = readSelection(edit([](nlohmann::json& d) { d["settings"] = {{"cost", "served-samples"}}; }), dataset);
+  REQUIRE(older.decimation.has_value());
+  CHECK(older.decimation->pricedSamples == DecimationOptions{}.pricedSamples);
+  CHECK(older.decimation->lazyRecosting == DecimationOptions{}.lazyRecosting);
+  testing::requireInputError(
+      [&] { readSelection(edit([](nlohmann::json& d) { d["settings"] = {{"cost", "median"}}; }), dataset); }, bad,
+      "settings: unknown cost 'median'");
+  testing::requireInputError(
+      [&] {
+        readSelection(edit([](nlohmann::json& d) { d["settings"] = {{"cost", "centroid"}, {"priced_samples", -1}}; }),
+                      dataset);
+      },
+      bad, "settings: priced_samples must not be negative");
+  testing::requireInputError(
+      [&] {
+        readSelection(edit([](nlohmann::json& d) { d["settings"] = {{"cost", "centroid"}, {"one_ring", "yes"}}; }), dataset);
+      },
+      bad, "field 'settings.one_ring' is not true or false");
+  testing::requireInputError(
+      [&] {
+        readSelection(edit([](nlohmann::json& d) { d["settings"] = {{"cost", "centroid"}, {"recosting", "soon"}}; }),
+                      dataset);
+      },
+      bad, "settings: unknown recosting 'soon'");
   std::ofstream(directory / "broken.json") << "{\"format\": ";
   testing::requireInputError([&] { readSelection(directory / "broken.json", dataset); }, "broken.json", "malformed JSON");
 }

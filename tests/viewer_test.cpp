@@ -44,6 +44,7 @@ TEST_CASE("the viewer under Xvfb shows the scene and its panels") {
       runTriwalk(directory, "view --dataset " + (directory / "data").string() + " --frames 8 --screenshot " + screenshot.string());
   INFO("log: " << run.log);
   REQUIRE(run.status == 0);
+  CHECK(run.log.find("live decimation: errors at 256x128; served-samples cost\n") != std::string::npos);
   REQUIRE(std::filesystem::exists(screenshot));
   const Rgb8Image image = readPng(screenshot);
   CHECK(image.width == 1280);
@@ -69,13 +70,13 @@ TEST_CASE("the viewer under Xvfb shows the scene and its panels") {
   CHECK(mapBackground > 2000);
 }
 
-TEST_CASE("the live decimation goes on on the lattice a selection was made on, unless asked, and bad ones fail early") {
+TEST_CASE("the live decimation goes on with the lattice and the cost a selection was made with, and bad ones fail early") {
   testing::TemporaryDirectory directory;
   testing::writeAnalyticDataset(directory / "data", 4, 3, 256, 1);
   const std::string data = " --dataset " + (directory / "data").string();
   const std::filesystem::path selection = directory / "selection.json";
-  const ViewerRun decimated = runTriwalk(directory, "decimate --quiet --target 6 --refine-radius 0 --error-stride 2" + data +
-                                                       " --out " + selection.string(), false);
+  const ViewerRun decimated = runTriwalk(directory, "decimate --quiet --target 6 --refine-radius 0 --error-stride 2 --cost centroid" +
+                                                       data + " --out " + selection.string(), false);
   INFO("decimate: " << decimated.log);
   REQUIRE(decimated.status == 0);
   const std::string view = "view" + data + " --selection " + selection.string() + " --frames 2 --screenshot " +
@@ -84,11 +85,12 @@ TEST_CASE("the live decimation goes on on the lattice a selection was made on, u
   const ViewerRun continued = runTriwalk(directory, view);
   INFO("view: " << continued.log);
   REQUIRE(continued.status == 0);
-  CHECK(continued.log.find("live decimation: errors at 256x128 (every other row and column)\n") != std::string::npos);
+  CHECK(continued.log.find("live decimation: errors at 256x128 (every other row and column); centroid cost\n") !=
+        std::string::npos);
   const ViewerRun asked = runTriwalk(directory, view + " --error-stride 1");
   INFO("view --error-stride 1: " << asked.log);
   REQUIRE(asked.status == 0);
-  CHECK(asked.log.find("live decimation: errors at 256x128\n") != std::string::npos);
+  CHECK(asked.log.find("live decimation: errors at 256x128; centroid cost\n") != std::string::npos);
 
   // Without a display: the option and the selection are checked before a window opens.
   const ViewerRun badOption = runTriwalk(directory, view + " --error-stride 3", false);

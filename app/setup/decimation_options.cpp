@@ -121,24 +121,20 @@ SelectionSettings selectionSettings(const SelectionArguments& arguments, double 
 
 nlohmann::json describeSelectionSettings(const SelectionSettings& settings, const TriangleErrorSettings& errors) {
   const DecimationOptions& options = settings.decimation;
-  return {{"max_error", options.maxError},
-          {"relative_error", settings.relativeError},
-          {"target", options.targetSamples},
-          {"one_ring", options.oneRingCandidates},
-          {"cost", collapseCostName(options.cost)},
-          {"fixed_boundary", options.fixedBoundary},
-          {"area_weighted_cost", options.areaWeightedCost},
-          {"priced_samples", options.pricedSamples},
-          {"recosting", options.lazyRecosting ? "lazy" : "eager"},
-          {"refine_radius",
-           settings.refinement.radius ? nlohmann::json(*settings.refinement.radius) : nlohmann::json("auto")},
-          {"exchanges", settings.refinement.maxExchanges ? nlohmann::json(*settings.refinement.maxExchanges)
-                                                         : nlohmann::json("auto")},
-          {"refine_screen", settings.refinement.screenedShare},
-          {"refine_priced", settings.refinement.pricedSamples},
-          {"error_width", errors.width},
-          {"error_stride", errors.stride},
-          {"quality", describeErrorSettings(errors)}};
+  nlohmann::json description = describeDecimationOptions(options);
+  description.update({{"max_error", options.maxError},
+                      {"relative_error", settings.relativeError},
+                      {"target", options.targetSamples},
+                      {"refine_radius",
+                       settings.refinement.radius ? nlohmann::json(*settings.refinement.radius) : nlohmann::json("auto")},
+                      {"exchanges", settings.refinement.maxExchanges ? nlohmann::json(*settings.refinement.maxExchanges)
+                                                                     : nlohmann::json("auto")},
+                      {"refine_screen", settings.refinement.screenedShare},
+                      {"refine_priced", settings.refinement.pricedSamples},
+                      {"error_width", errors.width},
+                      {"error_stride", errors.stride},
+                      {"quality", describeErrorSettings(errors)}});
+  return description;
 }
 
 }  // namespace triwalk

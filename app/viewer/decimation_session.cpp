@@ -293,8 +293,9 @@ Selection DecimationSession::selection() const {
   selection.collapses.assign(log_.begin(), log_.begin() + current.step);
   selection.stopReason = "saved from the viewer at step " + std::to_string(current.step);
   selection.nextCost = current.nextCost;
-  // So that the viewer continues the saved selection on the same pixels.
-  selection.settings = {{"error_width", settings_.width}, {"error_stride", settings_.stride}};
+  // So that the viewer continues the saved selection the same way.
+  selection.settings = describeDecimationOptions(options_);
+  selection.settings.update({{"error_width", settings_.width}, {"error_stride", settings_.stride}});
   return selection;
 }
 

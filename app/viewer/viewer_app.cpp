@@ -78,9 +78,13 @@ public:
                                              : std::optional<Selection>(readSelection(options.selection, dataset_))),
         errorSettings_(liveErrorSettings(options, dataset_, selection_)),
         context_(options.width, options.height, "triwalk") {
-    std::printf("live decimation: %s\n", describeErrorPanorama(errorSettings_.width, errorSettings_.stride).c_str());
+    // A selection goes on with the collapse options it was made with.
+    const DecimationOptions decimation =
+        selection_ && selection_->decimation ? *selection_->decimation : DecimationOptions{};
+    std::printf("live decimation: %s; %s cost\n", describeErrorPanorama(errorSettings_.width, errorSettings_.stride).c_str(),
+                collapseCostName(decimation.cost));
     std::fflush(stdout);
-    session_ = std::make_unique<DecimationSession>(dataset_, errorSettings_, DecimationOptions{}, selection_);
+    session_ = std::make_unique<DecimationSession>(dataset_, errorSettings_, decimation, selection_);
     state_.dataset = &dataset_;
     state_.session = session_.get();
     state_.snapshot = session_->snapshot();

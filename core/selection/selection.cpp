@@ -23,6 +23,28 @@ nlohmann::json trianglesToJson(const std::vector<Triangle>& triangles, const Dat
   return array;
 }
 
+DecimationOptions readDecimationOptions(const JsonObject& settings) {
+  DecimationOptions options;
+  const std::string cost = settings.string("cost");
+  if (cost != collapseCostName(CollapseCost::ServedSamples) && cost != collapseCostName(CollapseCost::Centroid)) {
+    settings.fail("unknown cost '" + cost + "'");
+  }
+  options.cost = parseCollapseCost(cost);
+  if (settings.has("one_ring")) options.oneRingCandidates = settings.boolean("one_ring");
+  if (settings.has("fixed_boundary")) options.fixedBoundary = settings.boolean("fixed_boundary");
+  if (settings.has("area_weighted_cost")) options.areaWeightedCost = settings.boolean("area_weighted_cost");
+  if (settings.has("priced_samples")) {
+    options.pricedSamples = settings.integer("priced_samples");
+    if (options.pricedSamples < 0) settings.fail("priced_samples must not be negative");
+  }
+  if (settings.has("recosting")) {
+    const std::string recosting = settings.string("recosting");
+    if (recosting != "lazy" && recosting != "eager") settings.fail("unknown recosting '" + recosting + "'");
+    options.lazyRecosting = recosting == "lazy";
+  }
+  return options;
+}
+
 class SelectionReader {
 public:
   SelectionReader(const Dataset& dataset, const std::string& file) : dataset_(dataset), file_(file) {}
@@ -69,6 +91,15 @@ std::vector<glm::dvec2> samplePositions(const Dataset& dataset) {
 ViewMesh datasetMesh(const Dataset& dataset, std::span<const int> samples, const std::string& subject) {
   const WalkableRegion region = dataset.walkableRegion();
   return ViewMesh::delaunay(samplePositions(dataset), samples, subject, &region);
+}
+
+nlohmann::json describeDecimationOptions(const DecimationOptions& options) {
+  return {{"one_ring", options.oneRingCandidates},
+          {"cost", collapseCostName(options.cost)},
+          {"fixed_boundary", options.fixedBoundary},
+          {"area_weighted_cost", options.areaWeightedCost},
+          {"priced_samples", options.pricedSamples},
+          {"recosting", options.lazyRecosting ? "lazy" : "eager"}};
 }
 
 void writeSelection(const std::filesystem::path& path, const Selection& selection, const Dataset& dataset) {
@@ -137,6 +168,7 @@ Selection readSelection(const std::filesystem::path& path, const Dataset& datase
       }
       selection.errorStride = stride;
     }
+    if (settings.has("cost")) selection.decimation = readDecimationOptions(settings);
   }
   const nlohmann::json& samples = root.array("samples");
   std::set<int> kept;

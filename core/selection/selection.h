@@ -46,11 +46,18 @@ struct Selection {
   std::string stopReason;
   double nextCost = 0.0;
   nlohmann::json settings = nlohmann::json::object();
-  // The error panorama the decimation read (the settings' error_width and
-  // error_stride), where the file says: the viewer continues a decimation
-  // on the same pixels.
+  // What the decimation ran with, where the file says, so that the viewer
+  // continues it the same way: the error panorama (the settings'
+  // error_width and error_stride) and the collapse options (those of
+  // describeDecimationOptions, in files that name the cost; options a file
+  // predates take their defaults).
   std::optional<int> errorWidth, errorStride;
+  std::optional<DecimationOptions> decimation;
 };
+
+// A selection file's settings for the collapse options (the stopping rule
+// aside: a continued decimation sets its own).
+nlohmann::json describeDecimationOptions(const DecimationOptions& options);
 
 // Writes atomically.
 void writeSelection(const std::filesystem::path& path, const Selection& selection, const Dataset& dataset);

@@ -14,9 +14,22 @@
 
 namespace triwalk {
 
+namespace {
+
+// A saved selection's settings: the collapse options and the error
+// panorama the viewer's decimation ran with, which it goes on with when
+// the file is opened again.
+nlohmann::json savedSettings(const DecimationOptions& options, const TriangleErrorSettings& settings) {
+  nlohmann::json saved = describeDecimationOptions(options);
+  saved.update({{"error_width", settings.width}, {"error_stride", settings.stride}});
+  return saved;
+}
+
+}  // namespace
+
 DecimationSession::DecimationSession(const Dataset& dataset, const TriangleErrorSettings& settings, DecimationOptions options,
                                      const std::optional<Selection>& selection)
-    : dataset_(dataset), settings_(settings), options_(options) {
+    : dataset_(dataset), settings_(settings), options_(options), savedSettings_(savedSettings(options, settings)) {
   // Single steps go as far as the person asks; runs set their own limit.
   options_.maxError = 0.0;
   options_.targetSamples = 0;
@@ -293,9 +306,7 @@ Selection DecimationSession::selection() const {
   selection.collapses.assign(log_.begin(), log_.begin() + current.step);
   selection.stopReason = "saved from the viewer at step " + std::to_string(current.step);
   selection.nextCost = current.nextCost;
-  // So that the viewer continues the saved selection the same way.
-  selection.settings = describeDecimationOptions(options_);
-  selection.settings.update({{"error_width", settings_.width}, {"error_stride", settings_.stride}});
+  selection.settings = savedSettings_;  // so that the viewer continues the saved selection the same way
   return selection;
 }
 

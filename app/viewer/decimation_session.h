@@ -83,7 +83,10 @@ private:
 
   const Dataset& dataset_;
   TriangleErrorSettings settings_;
-  DecimationOptions options_;
+  DecimationOptions options_;  // the worker's: runs change its stopping rule
+  // What a saved selection's settings say it was made with, fixed at the
+  // start (the UI thread saves while the worker runs).
+  const nlohmann::json savedSettings_;
   std::vector<Triangle> initial_;
   int initialSamples_ = 0;  // each collapse removes one; relocations keep the count
 

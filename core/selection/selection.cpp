@@ -26,10 +26,11 @@ nlohmann::json trianglesToJson(const std::vector<Triangle>& triangles, const Dat
 DecimationOptions readDecimationOptions(const JsonObject& settings) {
   DecimationOptions options;
   const std::string cost = settings.string("cost");
-  if (cost != collapseCostName(CollapseCost::ServedSamples) && cost != collapseCostName(CollapseCost::Centroid)) {
-    settings.fail("unknown cost '" + cost + "'");
+  try {
+    options.cost = parseCollapseCost(cost);
+  } catch (const InputError& error) {
+    settings.fail(error.problem());  // parseCollapseCost names --cost; here the file is at fault
   }
-  options.cost = parseCollapseCost(cost);
   if (settings.has("one_ring")) options.oneRingCandidates = settings.boolean("one_ring");
   if (settings.has("fixed_boundary")) options.fixedBoundary = settings.boolean("fixed_boundary");
   if (settings.has("area_weighted_cost")) options.areaWeightedCost = settings.boolean("area_weighted_cost");

@@ -339,8 +339,7 @@ TEST_CASE("selection.json round trip, and bad selections name the file and the p
   REQUIRE(loaded.collapses.size() == selection.collapses.size());
   CHECK(loaded.collapses.back().added == selection.collapses.back().added);
   CHECK(loaded.collapses.back().cost == selection.collapses.back().cost);
-  CHECK_FALSE(loaded.errorWidth.has_value());
-  CHECK_FALSE(loaded.errorStride.has_value());
+  CHECK_FALSE(loaded.errors.has_value());
   CHECK_FALSE(loaded.decimation.has_value());
 
   auto edit = [&](const std::function<void(nlohmann::json&)>& change) {
@@ -363,27 +362,76 @@ TEST_CASE("selection.json round trip, and bad selections name the file and the p
   testing::requireInputError([&] { readSelection(edit([](nlohmann::json& d) { d["version"] = 2; }), dataset); }, bad,
                              "unknown selection version 2");
 
-  // The error panorama the decimation read, which the viewer goes on with.
+  // The errors the decimation read, which the viewer goes on with: a file
+  // that names only the lattice gets decimate's defaults for the rest.
   const Selection lattice = readSelection(edit([](nlohmann::json& d) {
                                             d["settings"] = {{"error_width", 16}, {"error_stride", 4}};
                                           }),
                                           dataset);
-  CHECK(lattice.errorWidth == 16);
-  CHECK(lattice.errorStride == 4);
-  testing::requireInputError(
-      [&] { readSelection(edit([](nlohmann::json& d) { d["settings"] = {{"error_width", 24}}; }), dataset); }, bad,
-      "settings: error_width 24 does not divide the data set's width 32");
-  testing::requireInputError(
-      [&] { readSelection(edit([](nlohmann::json& d) { d["settings"] = {{"error_stride", 3}}; }), dataset); }, bad,
-      "settings: error_stride must be 1, 2 or 4");
-  testing::requireInputError(
-      [&] {
-        readSelection(edit([](nlohmann::json& d) { d["settings"] = {{"error_width", 4}, {"error_stride", 4}}; }), dataset);
-      },
-      bad, "settings: error_stride must be 1, 2 or 4");
-  testing::requireInputError(
-      [&] { readSelection(edit([](nlohmann::json& d) { d["settings"] = {{"error_stride", 2.5}}; }), dataset); }, bad,
-      "field 'settings.error_stride' is not an integer");
+  REQUIRE(lattice.errors.has_value());
+  CHECK(lattice.errors->width == 16);
+  CHECK(lattice.errors->stride == 4);
+  CHECK(lattice.errors->synthesis.warp.mesh == kSelectionSourceMesh);
+  CHECK(lattice.errors->synthesis.blend.weights == kSelectionBlendWeights);
+  CHECK(lattice.errors->synthesis.holes == kDefaultErrorHoles);
+  const Selection older = readSelection(edit([](nlohmann::json& d) { d["settings"] = {{"holes", "mark"}}; }), dataset);
+  REQUIRE(older.errors.has_value());
+  CHECK(older.errors->width == errorWidthFor(dataset, 0));
+  CHECK(older.errors->stride == 1);
+  CHECK(older.errors->synthesis.holes == HoleMode::Mark);
+
+  // Every option away from decimate's default comes back as it was made.
+  TriangleErrorSettings madeErrors;
+  madeErrors.width = 16;
+  madeErrors.stride = 2;
+  madeErrors.destinations = TriangleDestinations::Quadrature;
+  madeErrors.synthesis.warp = {.method = WarpMethod::Point, .stretchTest = StretchTest::DepthRatio, .grazingAngleDegrees = 7.5f,
+                         .maxDepthRatio = 1.5f, .mesh = SourceMesh::Grid, .meshTolerancePixels = 0.75f};
+  madeErrors.synthesis.blend = {.epsilon = 0.125f, .minimumWeightDistance = 0.25f, .weights = BlendWeights::Reliability};
+  madeErrors.synthesis.holes = HoleMode::Mark;
+  madeErrors.error = {.alpha = 2.0, .beta = 0.5, .delta = 9.0, .weighting = PixelWeighting::Uniform};
+  const Selection remade = readSelection(edit([&](nlohmann::json& d) { d["settings"] = describeSelectionErrors(madeErrors); }), dataset);
+  REQUIRE(remade.errors.has_value());
+  const TriangleErrorSettings& read = *remade.errors;
+  CHECK(read.width == 16);
+  CHECK(read.stride == 2);
+  CHECK(read.destinations == TriangleDestinations::Quadrature);
+  CHECK(read.synthesis.warp.method == WarpMethod::Point);
+  CHECK(read.synthesis.warp.stretchTest == StretchTest::DepthRatio);
+  CHECK(read.synthesis.warp.grazingAngleDegrees == 7.5f);
+  CHECK(read.synthesis.warp.maxDepthRatio == 1.5f);
+  CHECK(read.synthesis.warp.mesh == SourceMesh::Grid);
+  CHECK(read.synthesis.warp.meshTolerancePixels == 0.75f);
+  CHECK(read.synthesis.blend == madeErrors.synthesis.blend);
+  CHECK(read.synthesis.holes == HoleMode::Mark);
+  CHECK(read.error.alpha == 2.0);
+  CHECK(read.error.beta == 0.5);
+  CHECK(read.error.delta == 9.0);
+  CHECK(read.error.weighting == PixelWeighting::Uniform);
+
+  auto refused = [&](nlohmann::json settings, const std::string& problem) {
+    testing::requireInputError([&] { readSelection(edit([&](nlohmann::json& d) { d["settings"] = settings; }), dataset); },
+                               bad, problem);
+  };
+  refused({{"error_width", 24}}, "settings: error_width 24 does not divide the data set's width 32");
+  refused({{"error_stride", 3}}, "settings: error_stride: must be a power of two dividing the error panorama's height (16), not 3");
+  refused({{"error_width", 4}, {"error_stride", 4}}, "settings: error_stride: must be a power of two dividing the error panorama's height (2), not 4");
+  refused({{"error_stride", 2.5}}, "field 'settings.error_stride' is not an integer");
+  refused({{"error_stride", 2}, {"holes", "fill"}}, "settings: error_stride: a lattice of pixels cannot be hole-filled: use it with holes black or mark");
+  refused({{"source_mesh", "quads"}}, "settings: unknown source mesh 'quads'");
+  refused({{"destinations", "corners"}}, "settings: unknown choice 'corners'");
+  refused({{"stretch_test", "angle"}}, "settings: unknown stretch test 'angle'");
+  refused({{"blend_weights", "equal"}}, "settings: unknown blend weights 'equal'");
+  refused({{"holes", "none"}}, "settings: unknown hole mode 'none'");
+  refused({{"pixel_weighting", "area"}}, "settings: unknown weighting 'area'");
+  refused({{"grazing_angle", 95}}, "settings: grazing_angle must be from 0 to 89, not 95");
+  refused({{"depth_ratio", 0.5}}, "settings: depth_ratio must be from 1 to 1000, not 0.5");
+  refused({{"mesh_tolerance", -1}}, "settings: mesh_tolerance must be from 0 to 8, not -1");
+  refused({{"epsilon", 11}}, "settings: epsilon must be from 0 to 10, not 11");
+  refused({{"min_weight_distance", 0}}, "settings: min_weight_distance must be positive");
+  refused({{"delta", -2}}, "settings: delta must not be negative");
+  refused({{"point_warp", "yes"}}, "field 'settings.point_warp' is not true or false");
+  refused({{"alpha", "ten"}}, "field 'settings.alpha' is not a number");
 
   // The collapse options, every one away from its default, and a file
   // that predates some of them.
@@ -402,10 +450,11 @@ TEST_CASE("selection.json round trip, and bad selections name the file and the p
   CHECK_FALSE(options.decimation->areaWeightedCost);
   CHECK(options.decimation->pricedSamples == 7);
   CHECK_FALSE(options.decimation->lazyRecosting);
-  const Selection older = readSelection(edit([](nlohmann::json& d) { d["settings"] = {{"cost", "served-samples"}}; }), dataset);
-  REQUIRE(older.decimation.has_value());
-  CHECK(older.decimation->pricedSamples == DecimationOptions{}.pricedSamples);
-  CHECK(older.decimation->lazyRecosting == DecimationOptions{}.lazyRecosting);
+  const Selection costOnly = readSelection(edit([](nlohmann::json& d) { d["settings"] = {{"cost", "served-samples"}}; }), dataset);
+  REQUIRE(costOnly.decimation.has_value());
+  CHECK_FALSE(costOnly.errors.has_value());
+  CHECK(costOnly.decimation->pricedSamples == DecimationOptions{}.pricedSamples);
+  CHECK(costOnly.decimation->lazyRecosting == DecimationOptions{}.lazyRecosting);
   testing::requireInputError(
       [&] { readSelection(edit([](nlohmann::json& d) { d["settings"] = {{"cost", "median"}}; }), dataset); }, bad,
       "settings: unknown cost 'median'");

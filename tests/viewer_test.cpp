@@ -44,7 +44,10 @@ TEST_CASE("the viewer under Xvfb shows the scene and its panels") {
       runTriwalk(directory, "view --dataset " + (directory / "data").string() + " --frames 8 --screenshot " + screenshot.string());
   INFO("log: " << run.log);
   REQUIRE(run.status == 0);
-  CHECK(run.log.find("live decimation: errors at 256x128; served-samples cost\n") != std::string::npos);
+  CHECK(run.log.find("live decimation: errors at 256x128, centroid destinations; warp mesh (grazing-angle 4.0 deg, "
+                     "simplified 0.25 px mesh); blend epsilon 0.050, r_min 0.10 m, distance weights; holes raw;") !=
+        std::string::npos);
+  CHECK(run.log.find("; served-samples cost\n") != std::string::npos);
   REQUIRE(std::filesystem::exists(screenshot));
   const Rgb8Image image = readPng(screenshot);
   CHECK(image.width == 1280);
@@ -70,27 +73,32 @@ TEST_CASE("the viewer under Xvfb shows the scene and its panels") {
   CHECK(mapBackground > 2000);
 }
 
-TEST_CASE("the live decimation goes on with the lattice and the cost a selection was made with, and bad ones fail early") {
+TEST_CASE("the live decimation goes on with the errors and the cost a selection was made with, and bad ones fail early") {
   testing::TemporaryDirectory directory;
   testing::writeAnalyticDataset(directory / "data", 4, 3, 256, 1);
   const std::string data = " --dataset " + (directory / "data").string();
   const std::filesystem::path selection = directory / "selection.json";
-  const ViewerRun decimated = runTriwalk(directory, "decimate --quiet --target 6 --refine-radius 0 --error-stride 2 --cost centroid" +
-                                                       data + " --out " + selection.string(), false);
+  const ViewerRun decimated =
+      runTriwalk(directory, "decimate --quiet --target 6 --refine-radius 0 --error-stride 2 --cost centroid --source-mesh grid "
+                            "--blend-weights reliability --grazing-angle 6" + data + " --out " + selection.string(), false);
   INFO("decimate: " << decimated.log);
   REQUIRE(decimated.status == 0);
   const std::string view = "view" + data + " --selection " + selection.string() + " --frames 2 --screenshot " +
                            (directory / "viewer.png").string();
 
-  const ViewerRun continued = runTriwalk(directory, view);
+  // The viewer's own --source-mesh and --grazing-angle are the walker's.
+  const ViewerRun continued = runTriwalk(directory, view + " --source-mesh simplified --grazing-angle 10");
   INFO("view: " << continued.log);
   REQUIRE(continued.status == 0);
-  CHECK(continued.log.find("live decimation: errors at 256x128 (every other row and column); centroid cost\n") !=
-        std::string::npos);
+  CHECK(continued.log.find("live decimation: errors at 256x128 (every other row and column), centroid destinations; "
+                           "warp mesh (grazing-angle 6.0 deg); blend epsilon 0.050, r_min 0.10 m, reliability weights; "
+                           "holes raw;") != std::string::npos);
+  CHECK(continued.log.find("; centroid cost\n") != std::string::npos);
   const ViewerRun asked = runTriwalk(directory, view + " --error-stride 1");
   INFO("view --error-stride 1: " << asked.log);
   REQUIRE(asked.status == 0);
-  CHECK(asked.log.find("live decimation: errors at 256x128; centroid cost\n") != std::string::npos);
+  CHECK(asked.log.find("live decimation: errors at 256x128, centroid destinations; warp mesh (grazing-angle 6.0 deg); "
+                       "blend epsilon 0.050, r_min 0.10 m, reliability weights;") != std::string::npos);
 
   // Without a display: the option and the selection are checked before a window opens.
   const ViewerRun badOption = runTriwalk(directory, view + " --error-stride 3", false);
@@ -104,7 +112,8 @@ TEST_CASE("the live decimation goes on with the lattice and the cost a selection
       directory, "view" + data + " --selection " + (directory / "bad.json").string() + " --frames 2 --screenshot " +
                      (directory / "viewer.png").string(), false);
   CHECK(badSelection.status != 0);
-  CHECK(badSelection.log.find("bad.json: settings: error_stride must be 1, 2 or 4") != std::string::npos);
+  CHECK(badSelection.log.find("bad.json: settings: error_stride: must be a power of two dividing the error panorama's "
+                               "height (128), not 3") != std::string::npos);
   CHECK(std::count(badSelection.log.begin(), badSelection.log.end(), '\n') == 1);
 }
 

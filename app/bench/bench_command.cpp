@@ -43,7 +43,7 @@ void registerBenchCommand(CLI::App& app) {
       ->add_option("--decimation-error-stride", arguments->decimationErrors.stride,
                    "The decimation's errors on every N-th row and column (decimate's --error-stride)")
       ->capture_default_str()
-      ->check(CLI::IsMember({1, 2, 4}));
+      ->check(errorStride());
   command->add_option("--dataset", arguments->dataset,
                       "Data set for the decimation figures (default: capture the default one first)");
   command->add_option("--selection", arguments->selection, "Selection for the viewer figure (default: all samples)");

@@ -33,12 +33,8 @@ void applyErrorStride(const SelectionArguments& arguments, TriangleErrorSettings
 }
 
 std::string describeErrorSettings(const TriangleErrorSettings& settings) {
-  return describeErrorPanorama(settings.width, settings.stride) + ", " +
-         (settings.destinations == TriangleDestinations::Centroid     ? "centroid"
-          : settings.destinations == TriangleDestinations::Quadrature ? "quadrature"
-                                                                       : "interior") +
-         " destinations; " +
-         describeQuality(settings.synthesis, settings.error);
+  return describeErrorPanorama(settings.width, settings.stride) + ", " + triangleDestinationsName(settings.destinations) +
+         " destinations; " + describeQuality(settings.synthesis, settings.error);
 }
 
 void addSelectionOptions(CLI::App& command, SelectionArguments& arguments) {
@@ -98,7 +94,7 @@ void addSelectionOptions(CLI::App& command, SelectionArguments& arguments) {
                   "pixels the whole one has there, a quarter of them at 2); 1: every pixel. Judging a selection "
                   "(eval, the suite's evaluation) always reads every pixel")
       ->capture_default_str()
-      ->check(CLI::IsMember({1, 2, 4}));
+      ->check(errorStride());
 }
 
 SelectionSettings selectionSettings(const SelectionArguments& arguments, double maxError, int targetSamples) {
@@ -111,7 +107,7 @@ SelectionSettings selectionSettings(const SelectionArguments& arguments, double 
   options.fixedBoundary = arguments.fixedBoundary || options.cost == CollapseCost::Centroid;
   options.areaWeightedCost = !arguments.unweightedCost;
   options.pricedSamples = arguments.pricedSamples;
-  options.lazyRecosting = arguments.recosting == "lazy";
+  options.lazyRecosting = parseLazyRecosting(arguments.recosting);
   settings.refinement.radius = arguments.refineRadius;
   settings.refinement.maxExchanges = arguments.exchanges;
   settings.refinement.screenedShare = arguments.refineScreen;
@@ -131,9 +127,8 @@ nlohmann::json describeSelectionSettings(const SelectionSettings& settings, cons
                                                                      : nlohmann::json("auto")},
                       {"refine_screen", settings.refinement.screenedShare},
                       {"refine_priced", settings.refinement.pricedSamples},
-                      {"error_width", errors.width},
-                      {"error_stride", errors.stride},
                       {"quality", describeErrorSettings(errors)}});
+  description.update(describeSelectionErrors(errors));
   return description;
 }
 

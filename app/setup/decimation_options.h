@@ -30,7 +30,7 @@ struct SelectionArguments {
   bool fixedBoundary = false;
   bool unweightedCost = false;
   int pricedSamples = DecimationOptions{}.pricedSamples;
-  std::string recosting = DecimationOptions{}.lazyRecosting ? "lazy" : "eager";
+  std::string recosting = recostingName(DecimationOptions{}.lazyRecosting);
   std::optional<double> refineRadius;  // none: neighbourhoodRadius
   std::optional<int> exchanges;        // none: as many as references
   double refineScreen = RefinementOptions{}.screenedShare;

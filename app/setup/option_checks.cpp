@@ -56,6 +56,8 @@ CLI::Validator positiveNumber() {
       "POSITIVE");
 }
 
+CLI::Validator errorStride() { return CLI::IsMember({1, 2, 4}); }
+
 CLI::Validator writableFile() {
   return CLI::Validator(
       [](std::string& text) {

@@ -10,6 +10,9 @@ namespace triwalk {
 // (CLI11's own says "not in range 0 to 1.8e308").
 CLI::Validator nonNegativeNumber();
 CLI::Validator positiveNumber();
+// The lattices --error-stride offers (decimate, suite, view, bench): every
+// pixel, every other row and column, every fourth.
+CLI::Validator errorStride();
 // An output file: its folder exists and is writable, and it is not a folder.
 CLI::Validator writableFile();
 // An output folder: it is a writable folder, or it can be created in the

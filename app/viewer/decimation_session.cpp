@@ -16,12 +16,12 @@ namespace triwalk {
 
 namespace {
 
-// A saved selection's settings: the collapse options and the error
-// panorama the viewer's decimation ran with, which it goes on with when
-// the file is opened again.
+// A saved selection's settings: the collapse options and the errors the
+// viewer's decimation ran with, which it goes on with when the file is
+// opened again.
 nlohmann::json savedSettings(const DecimationOptions& options, const TriangleErrorSettings& settings) {
   nlohmann::json saved = describeDecimationOptions(options);
-  saved.update({{"error_width", settings.width}, {"error_stride", settings.stride}});
+  saved.update(describeSelectionErrors(settings));
   return saved;
 }
 

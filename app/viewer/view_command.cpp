@@ -32,7 +32,7 @@ void registerViewCommand(CLI::App& app) {
   command->add_option("--error-stride", arguments->errorStride, "Compute the decimation's errors on every N-th row and "
                       "column of the error panorama, as decimate's --error-stride (2: about 2.6x the collapses a "
                       "second, at a measured cost in quality: docs/RESULTS.md); default: the selection's, else 1")
-      ->check(CLI::IsMember({1, 2, 4}));
+      ->check(errorStride());
   command->add_option("--frames", arguments->frames, "Render this many frames, write --screenshot and exit");
   command->add_option("--screenshot", arguments->screenshot, "With --frames: PNG of the window at the last frame")->check(writableFile());
   command->add_option("--path", arguments->path, "With --frames: camera path file (x y z yaw pitch a line)");

@@ -4,6 +4,7 @@
 
 #include "app/viewer/viewer_app.h"
 
+#include "app/setup/decimation_options.h"
 #include "app/setup/walkthrough_setup.h"
 #include "app/viewer/viewer_state.h"
 #include "core/io/png_io.h"
@@ -51,19 +52,24 @@ glm::vec3 startPosition(const ViewMesh& mesh, float eye) {
   return glm::vec3(glm::vec2(mesh.contains(t, middle) ? middle : mesh.centroid(t)), eye);
 }
 
-// The errors the live decimation computes. --holes, --source-mesh and
-// --blend-weights choose what the walker sees; the errors are decimate's
-// defaults, so that its steps match the command's, on the error panorama
-// a continued selection was made on (a decimation on a lattice goes on on
-// that lattice) unless asked otherwise.
+// The errors the live decimation computes: those a continued selection was
+// made with (a decimation on a lattice, on grid meshes or with other blend
+// weights goes on that way), else decimate's defaults, so that its steps
+// match the command's. --error-width and --error-stride override them;
+// --holes, --source-mesh and --blend-weights choose only what the walker
+// sees.
 TriangleErrorSettings liveErrorSettings(const ViewerOptions& options, const Dataset& dataset,
                                         const std::optional<Selection>& selection) {
-  const int madeWidth = selection ? selection->errorWidth.value_or(0) : 0;  // 0: errorWidthFor's default
-  const int madeStride = selection ? selection->errorStride.value_or(kSelectionErrorStride) : kSelectionErrorStride;
   TriangleErrorSettings settings;
-  settings.width = errorWidthFor(dataset, options.errorWidth > 0 ? options.errorWidth : madeWidth);
-  settings.synthesis = withSelectionDefaults(options.synthesis);
-  settings.stride = options.errorStride > 0 ? options.errorStride : madeStride;
+  if (selection && selection->errors) {
+    settings = *selection->errors;
+  } else {
+    settings.width = errorWidthFor(dataset, 0);
+    settings.stride = kSelectionErrorStride;
+    settings.synthesis = withSelectionDefaults(options.synthesis);
+  }
+  if (options.errorWidth > 0) settings.width = errorWidthFor(dataset, options.errorWidth);
+  if (options.errorStride > 0) settings.stride = options.errorStride;
   checkErrorStride(settings);
   return settings;
 }
@@ -81,7 +87,7 @@ public:
     // A selection goes on with the collapse options it was made with.
     const DecimationOptions decimation =
         selection_ && selection_->decimation ? *selection_->decimation : DecimationOptions{};
-    std::printf("live decimation: %s; %s cost\n", describeErrorPanorama(errorSettings_.width, errorSettings_.stride).c_str(),
+    std::printf("live decimation: %s; %s cost\n", describeErrorSettings(errorSettings_).c_str(),
                 collapseCostName(decimation.cost));
     std::fflush(stdout);
     session_ = std::make_unique<DecimationSession>(dataset_, errorSettings_, decimation, selection_);

@@ -45,6 +45,13 @@ CollapseCost parseCollapseCost(const std::string& name) {
   throw InputError("--cost", "unknown cost '" + name + "' (use served-samples or centroid)");
 }
 
+const char* recostingName(bool lazyRecosting) { return lazyRecosting ? "lazy" : "eager"; }
+
+bool parseLazyRecosting(const std::string& name) {
+  if (name == "lazy" || name == "eager") return name == "lazy";
+  throw InputError("--recosting", "unknown recosting '" + name + "' (use lazy or eager)");
+}
+
 const char* stopReasonName(StopReason reason) {
   switch (reason) {
     case StopReason::None: return "not stopped";

@@ -88,6 +88,10 @@ enum class CollapseCost { ServedSamples, Centroid };
 const char* collapseCostName(CollapseCost cost);
 // Parses "served-samples" or "centroid"; throws InputError.
 CollapseCost parseCollapseCost(const std::string& name);
+// DecimationOptions::lazyRecosting by name: "lazy" or "eager".
+const char* recostingName(bool lazyRecosting);
+// Parses "lazy" or "eager" (true for lazy); throws InputError.
+bool parseLazyRecosting(const std::string& name);
 
 struct DecimationOptions {
   double maxError = 1.85;        // no collapse whose error exceeds this; <= 0: no threshold

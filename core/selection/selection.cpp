@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <sstream>
 
 namespace triwalk {
 
@@ -23,14 +24,34 @@ nlohmann::json trianglesToJson(const std::vector<Triangle>& triangles, const Dat
   return array;
 }
 
+// A choice a settings object names, parsed by the function that parses
+// the command-line option setting it. That one names the option when the
+// name is unknown; here the file is at fault.
+template <typename Parse>
+auto namedChoice(const JsonObject& settings, const std::string& key, Parse parse) {
+  const std::string name = settings.string(key);
+  try {
+    return parse(name);
+  } catch (const InputError& error) {
+    settings.fail(error.problem());
+  }
+}
+
+// A number a settings object gives, within the bounds of the command-line
+// option that sets it.
+double numberWithin(const JsonObject& settings, const std::string& key, double lowest, double highest) {
+  const double value = settings.number(key);
+  if (!(value >= lowest && value <= highest)) {
+    std::ostringstream problem;
+    problem << key << " must be from " << lowest << " to " << highest << ", not " << value;
+    settings.fail(problem.str());
+  }
+  return value;
+}
+
 DecimationOptions readDecimationOptions(const JsonObject& settings) {
   DecimationOptions options;
-  const std::string cost = settings.string("cost");
-  try {
-    options.cost = parseCollapseCost(cost);
-  } catch (const InputError& error) {
-    settings.fail(error.problem());  // parseCollapseCost names --cost; here the file is at fault
-  }
+  options.cost = namedChoice(settings, "cost", parseCollapseCost);
   if (settings.has("one_ring")) options.oneRingCandidates = settings.boolean("one_ring");
   if (settings.has("fixed_boundary")) options.fixedBoundary = settings.boolean("fixed_boundary");
   if (settings.has("area_weighted_cost")) options.areaWeightedCost = settings.boolean("area_weighted_cost");
@@ -38,12 +59,63 @@ DecimationOptions readDecimationOptions(const JsonObject& settings) {
     options.pricedSamples = settings.integer("priced_samples");
     if (options.pricedSamples < 0) settings.fail("priced_samples must not be negative");
   }
-  if (settings.has("recosting")) {
-    const std::string recosting = settings.string("recosting");
-    if (recosting != "lazy" && recosting != "eager") settings.fail("unknown recosting '" + recosting + "'");
-    options.lazyRecosting = recosting == "lazy";
-  }
+  if (settings.has("recosting")) options.lazyRecosting = namedChoice(settings, "recosting", parseLazyRecosting);
   return options;
+}
+
+// The keys of describeSelectionErrors.
+const char* const kErrorKeys[] = {"error_width", "error_stride",   "destinations", "point_warp",  "stretch_test",
+                                  "grazing_angle", "depth_ratio",  "source_mesh",  "mesh_tolerance", "epsilon",
+                                  "min_weight_distance", "blend_weights", "holes", "alpha", "beta", "delta",
+                                  "pixel_weighting"};
+
+// The bounds are those of the command-line options (app/setup/quality_options.cpp).
+std::optional<TriangleErrorSettings> readSelectionErrors(const JsonObject& settings, const Dataset& dataset) {
+  if (std::none_of(std::begin(kErrorKeys), std::end(kErrorKeys), [&](const char* key) { return settings.has(key); })) {
+    return std::nullopt;
+  }
+  TriangleErrorSettings errors;
+  errors.synthesis = withSelectionDefaults(errors.synthesis);
+  errors.width = errorWidthFor(dataset, 0);
+  if (settings.has("error_width")) {
+    errors.width = settings.integer("error_width");
+    if (errors.width <= 0 || dataset.largestWidthAtMost(errors.width) != errors.width) {
+      settings.fail("error_width " + std::to_string(errors.width) + " does not divide the data set's width " +
+                    std::to_string(dataset.manifest().width));
+    }
+  }
+  if (settings.has("error_stride")) errors.stride = settings.integer("error_stride");
+  if (settings.has("destinations")) errors.destinations = namedChoice(settings, "destinations", parseTriangleDestinations);
+  WarpOptions& warp = errors.synthesis.warp;
+  if (settings.has("point_warp")) warp.method = settings.boolean("point_warp") ? WarpMethod::Point : WarpMethod::Mesh;
+  if (settings.has("stretch_test")) warp.stretchTest = namedChoice(settings, "stretch_test", parseStretchTest);
+  if (settings.has("grazing_angle")) warp.grazingAngleDegrees = float(numberWithin(settings, "grazing_angle", 0.0, 89.0));
+  if (settings.has("depth_ratio")) warp.maxDepthRatio = float(numberWithin(settings, "depth_ratio", 1.0, 1000.0));
+  if (settings.has("source_mesh")) warp.mesh = namedChoice(settings, "source_mesh", parseSourceMesh);
+  if (settings.has("mesh_tolerance")) warp.meshTolerancePixels = float(numberWithin(settings, "mesh_tolerance", 0.0, 8.0));
+  BlendOptions& blend = errors.synthesis.blend;
+  if (settings.has("epsilon")) blend.epsilon = float(numberWithin(settings, "epsilon", 0.0, 10.0));
+  if (settings.has("min_weight_distance")) {
+    blend.minimumWeightDistance = float(settings.number("min_weight_distance"));
+    if (!(blend.minimumWeightDistance > 0.0f)) settings.fail("min_weight_distance must be positive");
+  }
+  if (settings.has("blend_weights")) blend.weights = namedChoice(settings, "blend_weights", parseBlendWeights);
+  if (settings.has("holes")) {
+    errors.synthesis.holes = namedChoice(settings, "holes", [](const std::string& name) { return parseHoleMode(name); });
+  }
+  if (settings.has("alpha")) errors.error.alpha = settings.number("alpha");
+  if (settings.has("beta")) errors.error.beta = settings.number("beta");
+  if (settings.has("delta")) {
+    errors.error.delta = settings.number("delta");
+    if (!(errors.error.delta >= 0.0)) settings.fail("delta must not be negative");
+  }
+  if (settings.has("pixel_weighting")) errors.error.weighting = namedChoice(settings, "pixel_weighting", parsePixelWeighting);
+  try {
+    checkErrorStride(errors, "error_stride", "holes");
+  } catch (const InputError& error) {
+    settings.fail(error.what());  // names error_stride
+  }
+  return errors;
 }
 
 class SelectionReader {
@@ -100,7 +172,29 @@ nlohmann::json describeDecimationOptions(const DecimationOptions& options) {
           {"fixed_boundary", options.fixedBoundary},
           {"area_weighted_cost", options.areaWeightedCost},
           {"priced_samples", options.pricedSamples},
-          {"recosting", options.lazyRecosting ? "lazy" : "eager"}};
+          {"recosting", recostingName(options.lazyRecosting)}};
+}
+
+nlohmann::json describeSelectionErrors(const TriangleErrorSettings& errors) {
+  const WarpOptions& warp = errors.synthesis.warp;
+  const BlendOptions& blend = errors.synthesis.blend;
+  return {{"error_width", errors.width},
+          {"error_stride", errors.stride},
+          {"destinations", triangleDestinationsName(errors.destinations)},
+          {"point_warp", warp.method == WarpMethod::Point},
+          {"stretch_test", stretchTestName(warp.stretchTest)},
+          {"grazing_angle", warp.grazingAngleDegrees},
+          {"depth_ratio", warp.maxDepthRatio},
+          {"source_mesh", sourceMeshName(warp.mesh)},
+          {"mesh_tolerance", warp.meshTolerancePixels},
+          {"epsilon", blend.epsilon},
+          {"min_weight_distance", blend.minimumWeightDistance},
+          {"blend_weights", blendWeightsName(blend.weights)},
+          {"holes", holeModeName(errors.synthesis.holes)},
+          {"alpha", errors.error.alpha},
+          {"beta", errors.error.beta},
+          {"delta", errors.error.delta},
+          {"pixel_weighting", pixelWeightingName(errors.error.weighting)}};
 }
 
 void writeSelection(const std::filesystem::path& path, const Selection& selection, const Dataset& dataset) {
@@ -152,23 +246,7 @@ Selection readSelection(const std::filesystem::path& path, const Dataset& datase
   if (root.has("settings")) {
     const JsonObject settings = root.object("settings");
     selection.settings = settings.json();
-    if (settings.has("error_width")) {
-      const int width = settings.integer("error_width");
-      if (width <= 0 || dataset.largestWidthAtMost(width) != width) {
-        settings.fail("error_width " + std::to_string(width) + " does not divide the data set's width " +
-                      std::to_string(dataset.manifest().width));
-      }
-      selection.errorWidth = width;
-    }
-    if (settings.has("error_stride")) {
-      const int stride = settings.integer("error_stride");
-      const bool dividesHeight = !selection.errorWidth || (*selection.errorWidth / 2) % stride == 0;
-      if ((stride != 1 && stride != 2 && stride != 4) || !dividesHeight) {
-        settings.fail("error_stride must be 1, 2 or 4 and divide the error panorama's height, not " +
-                      std::to_string(stride));
-      }
-      selection.errorStride = stride;
-    }
+    selection.errors = readSelectionErrors(settings, dataset);
     if (settings.has("cost")) selection.decimation = readDecimationOptions(settings);
   }
   const nlohmann::json& samples = root.array("samples");

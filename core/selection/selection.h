@@ -23,6 +23,7 @@
 
 #include "core/io/dataset.h"
 #include "core/selection/edge_collapse_decimator.h"
+#include "core/selection/triangle_error.h"
 
 #include <nlohmann/json.hpp>
 
@@ -47,17 +48,25 @@ struct Selection {
   double nextCost = 0.0;
   nlohmann::json settings = nlohmann::json::object();
   // What the decimation ran with, where the file says, so that the viewer
-  // continues it the same way: the error panorama (the settings'
-  // error_width and error_stride) and the collapse options (those of
-  // describeDecimationOptions, in files that name the cost; options a file
-  // predates take their defaults).
-  std::optional<int> errorWidth, errorStride;
+  // continues it the same way. The errors (describeSelectionErrors), in
+  // files that name any of them: a field the file predates takes
+  // decimate's default (the width: errorWidthFor's for the data set); the
+  // layer cache is left to the reader. The collapse options
+  // (describeDecimationOptions), in files that name the cost; options a
+  // file predates take their defaults.
+  std::optional<TriangleErrorSettings> errors;
   std::optional<DecimationOptions> decimation;
 };
 
 // A selection file's settings for the collapse options (the stopping rule
 // aside: a continued decimation sets its own).
 nlohmann::json describeDecimationOptions(const DecimationOptions& options);
+
+// A selection file's settings for the errors its decimation read: the
+// error panorama (error_width, error_stride), the triangles' destinations,
+// and every warp, blend, hole and error option, by the names of the
+// options that set them.
+nlohmann::json describeSelectionErrors(const TriangleErrorSettings& errors);
 
 // Writes atomically.
 void writeSelection(const std::filesystem::path& path, const Selection& selection, const Dataset& dataset);

@@ -26,13 +26,13 @@ std::string describeErrorPanorama(int width, int stride) {
   return "errors at " + std::to_string(width) + "x" + std::to_string(width / 2) + lattice;
 }
 
-void checkErrorStride(const TriangleErrorSettings& settings) {
+void checkErrorStride(const TriangleErrorSettings& settings, const std::string& strideName, const std::string& holesName) {
   if (!std::has_single_bit(unsigned(settings.stride)) || (settings.width / 2) % settings.stride != 0) {
-    throw InputError("--error-stride", "must be a power of two dividing the error panorama's height (" +
-                                           std::to_string(settings.width / 2) + "), not " + std::to_string(settings.stride));
+    throw InputError(strideName, "must be a power of two dividing the error panorama's height (" +
+                                     std::to_string(settings.width / 2) + "), not " + std::to_string(settings.stride));
   }
   if (settings.stride > 1 && settings.synthesis.holes == HoleMode::Fill) {
-    throw InputError("--error-stride", "a lattice of pixels cannot be hole-filled: use it with --holes black or mark");
+    throw InputError(strideName, "a lattice of pixels cannot be hole-filled: use it with " + holesName + " black or mark");
   }
 }
 
@@ -86,6 +86,15 @@ TriangleDestinations parseTriangleDestinations(const std::string& name) {
   if (name == "quadrature") return TriangleDestinations::Quadrature;
   if (name == "interior") return TriangleDestinations::Interior;
   throw InputError("--triangle-destinations", "unknown choice '" + name + "' (use centroid, quadrature or interior)");
+}
+
+const char* triangleDestinationsName(TriangleDestinations destinations) {
+  switch (destinations) {
+    case TriangleDestinations::Centroid: return "centroid";
+    case TriangleDestinations::Quadrature: return "quadrature";
+    case TriangleDestinations::Interior: return "interior";
+  }
+  return "?";
 }
 
 std::vector<std::pair<int, double>> DatasetTriangleErrors::destinationsOf(const Triangle& triangle) const {

@@ -59,6 +59,7 @@ constexpr int kMaxInteriorDestinations = 8;
 
 // Parses "centroid", "quadrature" or "interior"; throws InputError.
 TriangleDestinations parseTriangleDestinations(const std::string& name);
+const char* triangleDestinationsName(TriangleDestinations destinations);
 
 // Errors at most this wide unless asked (the width the main job and
 // docs/RESULTS.md measure at); commands pick the largest width not above it
@@ -125,10 +126,12 @@ struct TriangleErrorSettings {
   ErrorOptions error;
 };
 
-// Throws InputError naming --error-stride unless settings.stride is a power
-// of two dividing the error panorama's height, and 1 with the hole fill
-// (which needs every pixel).
-void checkErrorStride(const TriangleErrorSettings& settings);
+// Throws InputError naming the stride (strideName: the option, or a
+// selection file's field) unless settings.stride is a power of two dividing
+// the error panorama's height, and 1 with the hole fill (which needs every
+// pixel; holesName says where the holes are chosen).
+void checkErrorStride(const TriangleErrorSettings& settings, const std::string& strideName = "--error-stride",
+                      const std::string& holesName = "--holes");
 
 // Which views DatasetTriangleErrors loads: a selection reads only the
 // samples; the probes are held out for judging one (eval, the suite's

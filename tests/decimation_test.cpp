@@ -433,6 +433,17 @@ TEST_CASE("selection.json round trip, and bad selections name the file and the p
   refused({{"point_warp", "yes"}}, "field 'settings.point_warp' is not true or false");
   refused({{"alpha", "ten"}}, "field 'settings.alpha' is not a number");
 
+  // The threshold it stopped at, where "run to error" starts in the viewer.
+  const Selection thresholds = readSelection(edit([](nlohmann::json& d) {
+                                               d["settings"] = {{"max_error", 1.5}, {"relative_error", 1.25}};
+                                             }),
+                                             dataset);
+  CHECK(thresholds.maxError == 1.5);
+  CHECK(thresholds.relativeError == 1.25);
+  CHECK(lattice.maxError == 0.0);
+  refused({{"max_error", -1}}, "settings: max_error must not be negative");
+  refused({{"relative_error", "auto"}}, "field 'settings.relative_error' is not a number");
+
   // The collapse options, every one away from its default, and a file
   // that predates some of them.
   DecimationOptions made;

@@ -47,7 +47,7 @@ TEST_CASE("the viewer under Xvfb shows the scene and its panels") {
   CHECK(run.log.find("live decimation: errors at 256x128, centroid destinations; warp mesh (grazing-angle 4.0 deg, "
                      "simplified 0.25 px mesh); blend epsilon 0.050, r_min 0.10 m, distance weights; holes raw;") !=
         std::string::npos);
-  CHECK(run.log.find("; served-samples cost\n") != std::string::npos);
+  CHECK(run.log.find("; served-samples cost; runs to 1.36 x the dense mean error\n") != std::string::npos);
   REQUIRE(std::filesystem::exists(screenshot));
   const Rgb8Image image = readPng(screenshot);
   CHECK(image.width == 1280);
@@ -93,12 +93,22 @@ TEST_CASE("the live decimation goes on with the errors and the cost a selection 
   CHECK(continued.log.find("live decimation: errors at 256x128 (every other row and column), centroid destinations; "
                            "warp mesh (grazing-angle 6.0 deg); blend epsilon 0.050, r_min 0.10 m, reliability weights; "
                            "holes raw;") != std::string::npos);
-  CHECK(continued.log.find("; centroid cost\n") != std::string::npos);
+  CHECK(continued.log.find("; centroid cost; runs to 1.36 x the dense mean error\n") != std::string::npos);
   const ViewerRun asked = runTriwalk(directory, view + " --error-stride 1");
   INFO("view --error-stride 1: " << asked.log);
   REQUIRE(asked.status == 0);
   CHECK(asked.log.find("live decimation: errors at 256x128, centroid destinations; warp mesh (grazing-angle 6.0 deg); "
                        "blend epsilon 0.050, r_min 0.10 m, reliability weights;") != std::string::npos);
+
+  // "run to error" starts at the threshold a selection was made with.
+  nlohmann::json absolute = nlohmann::json::parse(readTextFile(selection));
+  absolute["settings"]["max_error"] = 2.5;
+  absolute["settings"]["relative_error"] = 0.0;
+  writeTextFileAtomically(directory / "absolute.json", absolute.dump());
+  const ViewerRun atAbsolute = runTriwalk(directory, "view" + data + " --selection " + (directory / "absolute.json").string() +
+                                                         " --frames 2 --screenshot " + (directory / "viewer.png").string());
+  INFO("view absolute.json: " << atAbsolute.log);
+  CHECK(atAbsolute.log.find("; centroid cost; runs to error 2.500\n") != std::string::npos);
 
   // Without a display: the option and the selection are checked before a window opens.
   const ViewerRun badOption = runTriwalk(directory, view + " --error-stride 3", false);

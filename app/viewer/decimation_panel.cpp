@@ -43,10 +43,23 @@ void drawDecimationPanel(ViewerState& state) {
   ImGui::SetNextItemWidth(80);
   ImGui::InputInt("N", &state.stepCount);
   state.stepCount = std::max(1, state.stepCount);
-  ImGui::SetNextItemWidth(120);
-  ImGui::InputFloat("##error", &state.runError, 0.05f, 0.5f, "%.3f");
+  if (ImGui::RadioButton("error", !state.runRelative)) state.runRelative = false;
   ImGui::SameLine();
-  if (ImGui::Button("run to error")) session.runToError(state.runError);
+  if (ImGui::RadioButton("x dense mean", state.runRelative)) state.runRelative = true;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(120);
+  ImGui::InputFloat("##error", state.runRelative ? &state.runRelativeError : &state.runError, 0.05f, 0.5f, "%.3f");
+  ImGui::SameLine();
+  if (ImGui::Button("run to error")) {
+    if (state.runRelative) {
+      session.runToRelativeError(state.runRelativeError);
+    } else {
+      session.runToError(state.runError);
+    }
+  }
+  if (state.runRelative && !std::isnan(s.denseMeanError)) {
+    ImGui::Text("dense mean %.3f: run to error %.3f", s.denseMeanError, state.runRelativeError * s.denseMeanError);
+  }
   ImGui::SetNextItemWidth(120);
   ImGui::InputInt("##samples", &state.runSamples);
   state.runSamples = std::max(3, state.runSamples);

@@ -169,6 +169,7 @@ void DecimationSession::publish(const std::string& status) {
   next.samples = samplesAfter(initialSamples_, log_, size_t(step_));
   next.errorsReady = errors_ != nullptr;
   if (decimator_ && decimatorStep_ == step_ && step_ == int(log_.size())) next.nextCost = decimator_->nextCost();
+  if (denseMeanError_) next.denseMeanError = *denseMeanError_;
   next.status = status;
   std::lock_guard lock(mutex_);
   next.version = snapshot_.version + 1;
@@ -219,21 +220,48 @@ std::string formatError(double error) {
 
 }  // namespace
 
+void DecimationSession::startRun(std::function<void()> run) {
+  stopRun_ = false;
+  post(std::move(run));
+}
+
 void DecimationSession::runToError(double maxError) {
+  startRun([this, maxError] { runToErrorNow(maxError, formatError(maxError)); });
+}
+
+void DecimationSession::runToRelativeError(double factor) {
+  startRun([this, factor] {
+    ensureErrors();
+    if (!denseMeanError_) {
+      // Over the dense triangulation, as decimate measures it, whatever the
+      // session started from.
+      publish("measuring the dense triangulation's mean error");
+      const ViewMesh dense = datasetMesh(dataset_, {}, dataset_.manifestPath().string());
+      denseMeanError_ = meanTriangleError(*cachedErrors_, dense.triangles(), true);
+    }
+    char goal[96];
+    std::snprintf(goal, sizeof goal, "%s (%.2f x the dense mean %.3f)", formatError(factor * *denseMeanError_).c_str(),
+                  factor, *denseMeanError_);
+    runToErrorNow(factor * *denseMeanError_, goal);
+  });
+}
+
+void DecimationSession::runToErrorNow(double maxError, const std::string& goal) {
   // Relocations (the refinement after decimation) never pass an error goal:
   // their error is a mean over all dense samples, not a collapse's.
-  runForward(maxError, 0, formatError(maxError), [this, maxError] {
+  runForward(maxError, 0, goal, [this, maxError] {
     const Collapse& next = log_[size_t(step_)];
     return next.kind != PlacementKind::Relocation && next.error > maxError;
   });
 }
 
 void DecimationSession::runToSamples(int samples) {
-  runForward(0.0, samples, std::to_string(samples) + " samples",
-             [this, samples] {
-               return log_[size_t(step_)].kind != PlacementKind::Relocation &&
-                      samplesAfter(initialSamples_, log_, size_t(step_)) <= samples;
-             });
+  startRun([this, samples] {
+    runForward(0.0, samples, std::to_string(samples) + " samples", [this, samples] {
+      return log_[size_t(step_)].kind != PlacementKind::Relocation &&
+             samplesAfter(initialSamples_, log_, size_t(step_)) <= samples;
+    });
+  });
 }
 
 // Replays the log while it lasts and the next logged collapse is not past
@@ -241,28 +269,25 @@ void DecimationSession::runToSamples(int samples) {
 // goal's limits.
 void DecimationSession::runForward(double maxError, int targetSamples, const std::string& goal,
                                    std::function<bool()> nextLoggedIsPastGoal) {
-  stopRun_ = false;
-  post([this, maxError, targetSamples, goal, nextLoggedIsPastGoal] {
-    const DecimationOptions saved = options_;
-    options_.maxError = maxError;
-    options_.targetSamples = targetSamples;
-    decimator_.reset();
-    auto start = std::chrono::steady_clock::now();
-    int computed = 0;
-    while (!stopRun_) {
-      const bool replay = step_ < int(log_.size());
-      if (replay && nextLoggedIsPastGoal()) break;
-      if (!forwardOne()) break;
-      if (replay) {
-        start = std::chrono::steady_clock::now();
-        continue;
-      }
-      if (++computed % 10 == 0) publish(runStatus(goal, computed, start, decimator_->expectedRemainingCollapses()));
+  const DecimationOptions saved = options_;
+  options_.maxError = maxError;
+  options_.targetSamples = targetSamples;
+  decimator_.reset();
+  auto start = std::chrono::steady_clock::now();
+  int computed = 0;
+  while (!stopRun_) {
+    const bool replay = step_ < int(log_.size());
+    if (replay && nextLoggedIsPastGoal()) break;
+    if (!forwardOne()) break;
+    if (replay) {
+      start = std::chrono::steady_clock::now();
+      continue;
     }
-    options_ = saved;
-    decimator_.reset();
-    publish(stopRun_ ? "stopped" : "reached " + goal);
-  });
+    if (++computed % 10 == 0) publish(runStatus(goal, computed, start, decimator_->expectedRemainingCollapses()));
+  }
+  options_ = saved;
+  decimator_.reset();
+  publish(stopRun_ ? "stopped" : "reached " + goal);
 }
 
 void DecimationSession::stop() { stopRun_ = true; }

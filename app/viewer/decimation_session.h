@@ -18,6 +18,7 @@
 #include <condition_variable>
 #include <deque>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -45,6 +46,9 @@ public:
     int firstRelocation = 0;             // where the refinement starts in the log (logSize: none)
     int samples = 0;
     double nextCost = -1.0;              // of the next new collapse; -1 unknown, +inf none
+    // The dense triangulation's mean triangle error, once a run to a
+    // relative error has measured it; NaN before.
+    double denseMeanError = std::numeric_limits<double>::quiet_NaN();
     bool errorsReady = false;            // panoramas loaded at the error width
     bool busy = false;
     std::string status;
@@ -54,6 +58,9 @@ public:
   void stepForward(int count);
   void stepBack(int count);
   void runToError(double maxError);
+  // As decimate --relative-error: to factor times the dense triangulation's
+  // mean triangle error, measured (once) first.
+  void runToRelativeError(double factor);
   void runToSamples(int samples);
   void stop();  // ends a run after the current collapse
 
@@ -74,7 +81,11 @@ private:
   void worker();
   void loadErrors();
   void post(std::function<void()> task);
+  // Posts a run; the UI thread's stop() ends it from then on.
+  void startRun(std::function<void()> run);
+  // Worker thread only.
   void runForward(double maxError, int targetSamples, const std::string& goal, std::function<bool()> nextLoggedIsPastGoal);
+  void runToErrorNow(double maxError, const std::string& goal);
   // Worker thread only. Waits for the loader.
   void ensureErrors();
   void ensureDecimator();
@@ -98,6 +109,7 @@ private:
   std::unique_ptr<CachingReconstructionErrors> cachedSampleErrors_;
   std::unique_ptr<EdgeCollapseDecimator> decimator_;
   int decimatorStep_ = -1;  // the step the decimator's mesh is at
+  std::optional<double> denseMeanError_;
 
   mutable std::mutex mutex_;
   std::condition_variable wake_;

@@ -74,6 +74,22 @@ TriangleErrorSettings liveErrorSettings(const ViewerOptions& options, const Data
   return settings;
 }
 
+// "run to error" starts at the threshold the selection was made with (a
+// factor of the dense mean error where it came from one), else at
+// decimate's default, the relative one. Says which.
+std::string startRunThreshold(ViewerState& state, const std::optional<Selection>& selection) {
+  state.runRelative = !(selection && selection->relativeError == 0.0 && selection->maxError > 0.0);
+  if (selection && selection->relativeError > 0.0) state.runRelativeError = float(selection->relativeError);
+  if (selection && selection->maxError > 0.0) state.runError = float(selection->maxError);
+  char text[64];
+  if (state.runRelative) {
+    std::snprintf(text, sizeof text, "%.2f x the dense mean error", double(state.runRelativeError));
+  } else {
+    std::snprintf(text, sizeof text, "error %.3f", double(state.runError));
+  }
+  return text;
+}
+
 class Viewer {
 public:
   // The data set, the selection and the errors are read before the window
@@ -87,8 +103,9 @@ public:
     // A selection goes on with the collapse options it was made with.
     const DecimationOptions decimation =
         selection_ && selection_->decimation ? *selection_->decimation : DecimationOptions{};
-    std::printf("live decimation: %s; %s cost\n", describeErrorSettings(errorSettings_).c_str(),
-                collapseCostName(decimation.cost));
+    const std::string threshold = startRunThreshold(state_, selection_);
+    std::printf("live decimation: %s; %s cost; runs to %s\n", describeErrorSettings(errorSettings_).c_str(),
+                collapseCostName(decimation.cost), threshold.c_str());
     std::fflush(stdout);
     session_ = std::make_unique<DecimationSession>(dataset_, errorSettings_, decimation, selection_);
     state_.dataset = &dataset_;

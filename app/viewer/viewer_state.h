@@ -6,6 +6,7 @@
 #include "app/viewer/gl_image.h"
 #include "app/viewer/walk_controller.h"
 #include "core/geometry/view_mesh.h"
+#include "core/selection/reference_selection.h"
 #include "render/walkthrough/frame_scale.h"
 #include "render/walkthrough/gpu_warper.h"
 #include "render/walkthrough/panorama_cache.h"
@@ -41,7 +42,12 @@ struct ViewerState {
 
   // Decimation panel inputs.
   int stepCount = 10;
+  // "run to error": an absolute error, or (runRelative) a factor of the
+  // dense triangulation's mean error, as decimate's --max-error and
+  // --relative-error; the viewer starts them at the selection's threshold.
+  bool runRelative = true;
   float runError = 1.85f;
+  float runRelativeError = float(kDefaultRelativeError);
   int runSamples = 21;
   std::string savePath = "selection.json";
   std::string message;

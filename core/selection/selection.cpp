@@ -247,6 +247,13 @@ Selection readSelection(const std::filesystem::path& path, const Dataset& datase
     const JsonObject settings = root.object("settings");
     selection.settings = settings.json();
     selection.errors = readSelectionErrors(settings, dataset);
+    auto threshold = [&](const std::string& key) {
+      const double value = settings.has(key) ? settings.number(key) : 0.0;
+      if (!(value >= 0.0)) settings.fail(key + " must not be negative");
+      return value;
+    };
+    selection.maxError = threshold("max_error");
+    selection.relativeError = threshold("relative_error");
     if (settings.has("cost")) selection.decimation = readDecimationOptions(settings);
   }
   const nlohmann::json& samples = root.array("samples");

@@ -56,6 +56,11 @@ struct Selection {
   // file predates take their defaults.
   std::optional<TriangleErrorSettings> errors;
   std::optional<DecimationOptions> decimation;
+  // The threshold the decimation stopped at (the settings' max_error, the
+  // absolute error it compared collapses with) and, when it came from one,
+  // the factor of the dense triangulation's mean error (relative_error);
+  // 0: none said.
+  double maxError = 0.0, relativeError = 0.0;
 };
 
 // A selection file's settings for the collapse options (the stopping rule

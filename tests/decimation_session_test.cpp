@@ -1,5 +1,6 @@
 // The viewer's live decimation, driven as its panel drives it: a run to a
-// relative error stops where decimate --relative-error stops.
+// relative error stops where decimate --relative-error stops, and a saved
+// selection says where it stopped.
 
 #include "app/viewer/decimation_session.h"
 #include "core/selection/reference_selection.h"
@@ -64,6 +65,11 @@ TEST_CASE("the viewer's run to a relative error measures the dense mean and stop
   CHECK(done.step == int(decimate.collapses));
   CHECK(done.samples == int(decimate.selection.samples.size()));
   CHECK(sortedTriangles(done.triangles) == sortedTriangles(decimate.selection.triangles));
+
+  // A saved selection names the threshold, where the viewer starts again.
+  const nlohmann::json saved = session.selection().settings;
+  CHECK(saved.at("relative_error").get<double>() == kFactor);
+  CHECK(saved.at("max_error").get<double>() == kFactor * decimate.denseMeanError);
 
   // The same threshold as an absolute error: no further step, from the log.
   session.runToError(kFactor * decimate.denseMeanError);

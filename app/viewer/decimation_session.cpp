@@ -33,6 +33,10 @@ DecimationSession::DecimationSession(const Dataset& dataset, const TriangleError
   // Single steps go as far as the person asks; runs set their own limit.
   options_.maxError = 0.0;
   options_.targetSamples = 0;
+  if (selection) {
+    reachedError_ = selection->maxError;
+    reachedFactor_ = selection->relativeError;
+  }
   if (selection && !selection->initialTriangles.empty()) {
     initial_ = selection->initialTriangles;
     log_ = selection->collapses;
@@ -226,7 +230,7 @@ void DecimationSession::startRun(std::function<void()> run) {
 }
 
 void DecimationSession::runToError(double maxError) {
-  startRun([this, maxError] { runToErrorNow(maxError, formatError(maxError)); });
+  startRun([this, maxError] { runToErrorNow(maxError, 0.0, formatError(maxError)); });
 }
 
 void DecimationSession::runToRelativeError(double factor) {
@@ -242,17 +246,21 @@ void DecimationSession::runToRelativeError(double factor) {
     char goal[96];
     std::snprintf(goal, sizeof goal, "%s (%.2f x the dense mean %.3f)", formatError(factor * *denseMeanError_).c_str(),
                   factor, *denseMeanError_);
-    runToErrorNow(factor * *denseMeanError_, goal);
+    runToErrorNow(factor * *denseMeanError_, factor, goal);
   });
 }
 
-void DecimationSession::runToErrorNow(double maxError, const std::string& goal) {
+void DecimationSession::runToErrorNow(double maxError, double factor, const std::string& goal) {
   // Relocations (the refinement after decimation) never pass an error goal:
   // their error is a mean over all dense samples, not a collapse's.
   runForward(maxError, 0, goal, [this, maxError] {
     const Collapse& next = log_[size_t(step_)];
     return next.kind != PlacementKind::Relocation && next.error > maxError;
   });
+  if (stopRun_) return;
+  std::lock_guard lock(mutex_);  // selection() reads them from the UI thread
+  reachedError_ = maxError;
+  reachedFactor_ = factor;
 }
 
 void DecimationSession::runToSamples(int samples) {
@@ -332,6 +340,7 @@ Selection DecimationSession::selection() const {
   selection.stopReason = "saved from the viewer at step " + std::to_string(current.step);
   selection.nextCost = current.nextCost;
   selection.settings = savedSettings_;  // so that the viewer continues the saved selection the same way
+  if (reachedError_ > 0.0) selection.settings.update({{"max_error", reachedError_}, {"relative_error", reachedFactor_}});
   return selection;
 }
 

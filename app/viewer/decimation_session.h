@@ -85,7 +85,8 @@ private:
   void startRun(std::function<void()> run);
   // Worker thread only.
   void runForward(double maxError, int targetSamples, const std::string& goal, std::function<bool()> nextLoggedIsPastGoal);
-  void runToErrorNow(double maxError, const std::string& goal);
+  // factor: of the dense mean error, when the threshold came from one (else 0).
+  void runToErrorNow(double maxError, double factor, const std::string& goal);
   // Worker thread only. Waits for the loader.
   void ensureErrors();
   void ensureDecimator();
@@ -117,6 +118,10 @@ private:
   Snapshot snapshot_;
   std::optional<Inspection> inspection_;
   std::atomic<bool> stopRun_{false};
+  // The last error a run reached (at first the selection's threshold), as
+  // a selection file's max_error and relative_error, so that a saved
+  // selection's "run to error" starts there.
+  double reachedError_ = 0.0, reachedFactor_ = 0.0;
   bool quit_ = false;
   // Loader results, handed to the worker under mutex_.
   std::unique_ptr<DatasetTriangleErrors> loadedErrors_;

@@ -63,15 +63,10 @@ DecimationOptions readDecimationOptions(const JsonObject& settings) {
   return options;
 }
 
-// The keys of describeSelectionErrors.
-const char* const kErrorKeys[] = {"error_width", "error_stride",   "destinations", "point_warp",  "stretch_test",
-                                  "grazing_angle", "depth_ratio",  "source_mesh",  "mesh_tolerance", "epsilon",
-                                  "min_weight_distance", "blend_weights", "holes", "alpha", "beta", "delta",
-                                  "pixel_weighting"};
-
 // The bounds are those of the command-line options (app/setup/quality_options.cpp).
 std::optional<TriangleErrorSettings> readSelectionErrors(const JsonObject& settings, const Dataset& dataset) {
-  if (std::none_of(std::begin(kErrorKeys), std::end(kErrorKeys), [&](const char* key) { return settings.has(key); })) {
+  const nlohmann::json keys = describeSelectionErrors(TriangleErrorSettings{});
+  if (std::none_of(keys.items().begin(), keys.items().end(), [&](const auto& key) { return settings.has(key.key()); })) {
     return std::nullopt;
   }
   TriangleErrorSettings errors;

@@ -70,7 +70,8 @@ TriangleErrorSettings liveErrorSettings(const ViewerOptions& options, const Data
   }
   if (options.errorWidth > 0) settings.width = errorWidthFor(dataset, options.errorWidth);
   if (options.errorStride > 0) settings.stride = options.errorStride;
-  checkErrorStride(settings);
+  // The live errors' holes are the selection's: the viewer's --holes is the walker's.
+  checkErrorStride(settings, "--error-stride", "a selection made with --holes");
   return settings;
 }
 

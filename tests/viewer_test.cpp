@@ -125,6 +125,17 @@ TEST_CASE("the live decimation goes on with the errors and the cost a selection 
   CHECK(badSelection.log.find("bad.json: settings: error_stride: must be a power of two dividing the error panorama's "
                                "height (128), not 3") != std::string::npos);
   CHECK(std::count(badSelection.log.begin(), badSelection.log.end(), '\n') == 1);
+  // A lattice asked of a selection whose errors are hole-filled.
+  document["settings"]["error_stride"] = 1;
+  document["settings"]["holes"] = "fill";
+  writeTextFileAtomically(directory / "filled.json", document.dump());
+  const ViewerRun filled = runTriwalk(directory, "view" + data + " --selection " + (directory / "filled.json").string() +
+                                                     " --error-stride 2 --frames 2 --screenshot " +
+                                                     (directory / "viewer.png").string(), false);
+  CHECK(filled.status != 0);
+  CHECK(filled.log.find("--error-stride: a lattice of pixels cannot be hole-filled: use it with a selection made with "
+                        "--holes black or mark") != std::string::npos);
+  CHECK(std::count(filled.log.begin(), filled.log.end(), '\n') == 1);
 }
 
 }  // namespace triwalk

@@ -409,6 +409,17 @@ TEST_CASE("selection.json round trip, and bad selections name the file and the p
   CHECK(read.error.delta == 9.0);
   CHECK(read.error.weighting == PixelWeighting::Uniform);
 
+  // Float options are written as people write them, and read back as the same floats.
+  TriangleErrorSettings defaults;
+  defaults.width = 32;
+  const nlohmann::json written = describeSelectionErrors(defaults);
+  CHECK(written.at("depth_ratio").dump() == "1.15");
+  CHECK(written.at("epsilon").dump() == "0.05");
+  const Selection asDefaults = readSelection(edit([&](nlohmann::json& d) { d["settings"] = written; }), dataset);
+  REQUIRE(asDefaults.errors.has_value());
+  CHECK(asDefaults.errors->synthesis.warp.maxDepthRatio == defaults.synthesis.warp.maxDepthRatio);
+  CHECK(asDefaults.errors->synthesis.blend == defaults.synthesis.blend);
+
   auto refused = [&](nlohmann::json settings, const std::string& problem) {
     testing::requireInputError([&] { readSelection(edit([&](nlohmann::json& d) { d["settings"] = settings; }), dataset); },
                                bad, problem);

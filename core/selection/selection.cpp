@@ -4,6 +4,7 @@
 #include "core/support/errors.h"
 
 #include <algorithm>
+#include <charconv>
 #include <map>
 #include <set>
 #include <sstream>
@@ -47,6 +48,17 @@ double numberWithin(const JsonObject& settings, const std::string& key, double l
     settings.fail(problem.str());
   }
   return value;
+}
+
+// A float option as the decimal people wrote (1.15, not the double
+// 1.149999976158142 nearest the float): its shortest decimal form, which
+// reads back as the same float.
+double asWritten(float value) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+  double written = 0.0;
+  std::from_chars(text, end, written);
+  return written;
 }
 
 DecimationOptions readDecimationOptions(const JsonObject& settings) {
@@ -178,12 +190,12 @@ nlohmann::json describeSelectionErrors(const TriangleErrorSettings& errors) {
           {"destinations", triangleDestinationsName(errors.destinations)},
           {"point_warp", warp.method == WarpMethod::Point},
           {"stretch_test", stretchTestName(warp.stretchTest)},
-          {"grazing_angle", warp.grazingAngleDegrees},
-          {"depth_ratio", warp.maxDepthRatio},
+          {"grazing_angle", asWritten(warp.grazingAngleDegrees)},
+          {"depth_ratio", asWritten(warp.maxDepthRatio)},
           {"source_mesh", sourceMeshName(warp.mesh)},
-          {"mesh_tolerance", warp.meshTolerancePixels},
-          {"epsilon", blend.epsilon},
-          {"min_weight_distance", blend.minimumWeightDistance},
+          {"mesh_tolerance", asWritten(warp.meshTolerancePixels)},
+          {"epsilon", asWritten(blend.epsilon)},
+          {"min_weight_distance", asWritten(blend.minimumWeightDistance)},
           {"blend_weights", blendWeightsName(blend.weights)},
           {"holes", holeModeName(errors.synthesis.holes)},
           {"alpha", errors.error.alpha},

@@ -200,6 +200,10 @@ TEST_CASE("an exchange moves a reference where no local move reaches: across a g
   CHECK(exchanged.objectiveAfter < 0.9 * local.objectiveAfter);
   // The log replays from the start to the result.
   CHECK(replayForward(start.triangles(), exchanged.moves, exchanged.moves.size()) == exchanged.triangles);
+  // The exchange searches' share of the errors is counted apart.
+  CHECK(local.exchangeSearchErrors == 0);
+  CHECK(exchanged.exchangeSearchErrors > 0);
+  CHECK(exchanged.exchangeSearchErrors < exchanged.errorsComputed);
   // No more exchanges than asked.
   FormulaErrors capped(formula);
   CHECK(refineSelection(positions, start.triangles(), capped, {1.5, 20, {}, nullptr, 0}).exchanges == 0);

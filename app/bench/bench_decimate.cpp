@@ -112,7 +112,7 @@ void benchDecimate(BenchTable& table, const Scene& scene, const std::string& dat
              std::to_string(refinement.moves.size()) + " moves (" + std::to_string(refinement.exchanges) +
                  " exchanges), " + std::to_string(refinement.passes) +
                  " passes of local moves; dense-sample errors computed " + std::to_string(refinement.errorsComputed) +
-                 ", cached " + std::to_string(refinement.cacheHits) + "; mean error " +
+                 " (" + std::to_string(refinement.exchangeSearchErrors) + " by the exchange searches), cached " + std::to_string(refinement.cacheHits) + "; mean error " +
                  formatNumber(refinement.objectiveBefore, 4) + " -> " + formatNumber(refinement.objectiveAfter, 4)});
 }
 

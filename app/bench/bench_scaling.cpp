@@ -49,7 +49,9 @@ void benchScaling(BenchTable& table, const Scene& scene, const BenchSelectionErr
                    std::to_string(scaling.decimation.layersComputed) + ", " +
                    std::to_string(scaling.decimation.layersWarpedAgain) + " of them again); " +
                    std::to_string(run.statistics.errorsComputed) + " + " +
-                   std::to_string(run.refinement.errorsComputed) + " errors; " + std::to_string(run.collapses) +
+                   std::to_string(run.refinement.errorsComputed) + " errors (" +
+                   std::to_string(run.refinement.exchangeSearchErrors) + " by the exchange searches); " +
+                   std::to_string(run.collapses) +
                    " collapses, " + std::to_string(run.refinement.moves.size()) + " moves (" +
                    std::to_string(run.refinement.exchanges) + " exchanges); loading " +
                    formatNumber(scaling.decimation.loadSeconds, 1) + " s, capture " +

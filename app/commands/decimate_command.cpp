@@ -84,10 +84,12 @@ void registerDecimateCommand(CLI::App& app) {
     if (refinement.radius > 0.0) {
       std::printf(
           "refinement: %zu moves (%d exchanges, %d passes of local moves within %.2f m); mean error over the "
-          "dense samples %.4f -> %.4f; %.1f s, errors computed %llu, served from the cache %llu\n",
+          "dense samples %.4f -> %.4f; %.1f s, errors computed %llu (%llu by the exchange searches), served from the "
+          "cache %llu\n",
           refinement.moves.size(), refinement.exchanges, refinement.passes, refinement.radius,
           refinement.objectiveBefore, refinement.objectiveAfter, run.refinementSeconds,
-          (unsigned long long)refinement.errorsComputed, (unsigned long long)refinement.cacheHits);
+          (unsigned long long)refinement.errorsComputed, (unsigned long long)refinement.exchangeSearchErrors,
+          (unsigned long long)refinement.cacheHits);
     }
     std::printf("warped layers computed %llu, reused %llu\n", (unsigned long long)errors.layerCache().misses(),
                 (unsigned long long)errors.layerCache().hits());

@@ -355,7 +355,9 @@ public:
     while (result_.exchanges < maxExchanges) {
       throwIfInterrupted();
       const ViewMesh before = mesh_;
+      const uint64_t computedBefore = result_.errorsComputed;
       const std::optional<std::pair<int, int>> exchanged = bestExchange(progress);
+      result_.exchangeSearchErrors += result_.errorsComputed - computedBefore;
       if (!exchanged) break;
       ++result_.exchanges;
       const auto [removed, added] = *exchanged;

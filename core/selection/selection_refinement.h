@@ -112,6 +112,10 @@ struct RefinementResult {
   int exchanges = 0;                 // moves from anywhere to anywhere
   int passes = 0;                    // of local moves, in all
   uint64_t errorsComputed = 0;
+  // Of errorsComputed, those the exchange searches computed (the rest are
+  // the local moves' and the start's): the part that grows with the
+  // insertion candidates, which a denser capture has more of.
+  uint64_t exchangeSearchErrors = 0;
   uint64_t cacheHits = 0;
 };
 

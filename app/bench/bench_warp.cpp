@@ -23,10 +23,11 @@ struct WarpRun {
 };
 
 WarpRun timeWarps(const WarpSource& source, const DestinationCamera& destination, int repetitions,
-                  PanoramaRaster raster = PanoramaRaster::RowSpans) {
+                  PanoramaRaster raster = PanoramaRaster::RowSpans,
+                  LayerReliability reliability = LayerReliability::Computed) {
   WarpRun run;
   const auto warp = [&] {
-    return warpToCamera(source, destination, WarpMethod::Mesh, LayerReliability::Computed, raster);
+    return warpToCamera(source, destination, WarpMethod::Mesh, reliability, raster);
   };
   warp();  // warm-up
   const auto start = BenchClock::now();
@@ -111,6 +112,16 @@ void benchWarp(BenchTable& table, const BenchViews& views, int decimationWidth) 
       pointers.push_back(small.back().get());
     }
     const double prepareSeconds = secondsSince(prepareStart) / 3.0;
+    if (mesh == SourceMesh::Simplified) {
+      // One warp as the decimation warps it (its sources' size, no reliability).
+      const WarpRun one = timeWarps(*small[0], smallDestination, 20, PanoramaRaster::RowSpans, LayerReliability::Omitted);
+      table.add({"CPU warp at the decimation's width, simplified source mesh, all threads",
+                 std::to_string(decimationWidth) + "x" + std::to_string(decimationWidth / 2) + " -> " +
+                     std::to_string(decimationWidth) + "x" + std::to_string(decimationWidth / 2) + ", " +
+                     std::to_string(small[0]->keptTriangleCount()) + " triangles, " +
+                     std::to_string(small[0]->vertexCount()) + " vertices",
+                 formatNumber(1000.0 * one.seconds, 2) + " ms per warp", split(one)});
+    }
     const int errors = 64;
     const auto errorStart = BenchClock::now();
     tbb::parallel_for(0, errors, [&](int) {

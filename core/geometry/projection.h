@@ -11,10 +11,13 @@
 // Pinhole: yaw about +z measured from +x, pitch up from the horizon;
 // image rows go down, pixel centres at +0.5 like the panorama.
 
+#include "core/geometry/float_arc_tangent.h"
+
 #include <glm/glm.hpp>
 
 #include <cmath>
 #include <numbers>
+#include <span>
 
 namespace triwalk {
 
@@ -37,15 +40,20 @@ struct EquirectProjection {
   glm::vec3 pixelDirection(int u, int v) const { return direction({float(u) + 0.5f, float(v) + 0.5f}); }
 
   // Inverse of direction(); x in [0, W), y in [0, H]. The direction need not be unit.
+  // The arc tangents are core/geometry/float_arc_tangent.h's: the same bits on any C library.
   glm::vec2 imagePoint(glm::vec3 direction) const {
-    float theta = std::atan2(direction.y, direction.x) - yaw;
-    const float phi = std::atan2(direction.z, std::hypot(direction.x, direction.y));
+    float theta = atan2Float(direction.y, direction.x) - yaw;
+    const float phi = atan2Float(direction.z, hypotFloat(direction.x, direction.y));
     float x = (theta + kPi) * float(width) / (2.0f * kPi);
     x = std::fmod(x, float(width));
     if (x < 0.0f) x += float(width);
     if (x >= float(width)) x = 0.0f;  // fmod can round up to exactly W
     return {x, (0.5f * kPi - phi) * float(height) / kPi};
   }
+
+  // imagePoint of each direction, the same bits, four at a time (about four
+  // times faster: the CPU warp projects every pixel it colours).
+  void imagePoints(std::span<const glm::vec3> directions, std::span<glm::vec2> points) const;
 
   // Solid angle of a pixel in row v relative to one at the equator (cos latitude).
   float rowSolidAngleWeight(int v) const {

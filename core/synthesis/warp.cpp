@@ -204,8 +204,13 @@ void WarpSource::adoptSimplified(const Panorama& panorama, SimplifiedTriangles t
   simplifiedTriangles_ = std::move(triangles);
 }
 
-glm::vec3 WarpSource::colorAlong(glm::vec3 direction) const {
-  const glm::vec2 p = projection_.imagePoint(direction);
+void WarpSource::colorsAlong(std::span<const glm::vec3> directions, std::span<glm::vec2> imagePoints,
+                             std::span<glm::vec3> colors) const {
+  projection_.imagePoints(directions, imagePoints);
+  for (size_t i = 0; i < directions.size(); ++i) colors[i] = colorAt(imagePoints[i]);
+}
+
+glm::vec3 WarpSource::colorAt(glm::vec2 p) const {
   const float fx = p.x - 0.5f, fy = std::clamp(p.y - 0.5f, 0.0f, float(height_ - 1));
   const int x0 = int(std::floor(fx)), y0 = int(fy);
   const float tx = fx - float(x0), ty = fy - float(y0);
@@ -739,7 +744,15 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
       WarpTimings{},
       std::vector<float>(reliability == LayerReliability::Computed ? layerPixels : 0, 1.0f)};
   tbb::parallel_for(tbb::blocked_range<int>(0, layerHeight), [&](const tbb::blocked_range<int>& rows) {
+    // A simplified source's colours are looked up along the rays to the
+    // covered points, a row's at once (the projections run four at a time).
+    std::vector<glm::vec3> rays;
+    std::vector<size_t> rayPixels;
+    std::vector<glm::vec2> rayImagePoints;
+    std::vector<glm::vec3> rayColors;
     for (int row = rows.begin(); row != rows.end(); ++row) {
+      rays.clear();
+      rayPixels.clear();
       const int y = row * stride;
       for (int x = 0; x < width; x += stride) {
         const size_t i = size_t(row) * size_t(layerWidth) + size_t(x / stride);
@@ -767,7 +780,8 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
             float(coverage.weights[0]) * a + float(coverage.weights[1]) * b + float(coverage.weights[2]) * c;
         const bool atInfinity = source.atInfinity(indices[0]);
         if (source.mesh() == SourceMesh::Simplified) {
-          layer.color.pixels[i] = source.colorAlong(atInfinity ? point : point - source.position());
+          rays.push_back(atInfinity ? point : point - source.position());
+          rayPixels.push_back(i);
         } else {
           glm::vec3 color(0.0f);
           for (int k = 0; k < 3; ++k) color += float(coverage.weights[k]) * source.color(indices[k]);
@@ -777,6 +791,10 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
           layer.reliability[i] = warpReliability(point, glm::cross(b - a, c - a), source.position(), destination.position);
         }
       }
+      rayImagePoints.resize(rays.size());
+      rayColors.resize(rays.size());
+      source.colorsAlong(rays, rayImagePoints, rayColors);
+      for (size_t k = 0; k < rays.size(); ++k) layer.color.pixels[rayPixels[k]] = rayColors[k];
     }
   });
   timings.resolveSeconds = secondsSince(stageStart);

@@ -31,6 +31,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -111,13 +112,16 @@ public:
   uint32_t keptTriangleCount() const { return keptCount_; }
   // A finite vertex none of whose grid triangles was kept.
   bool orphan(uint32_t vertex) const { return orphan_[vertex] != 0; }
-  // Simplified: the source's colour along a ray from its centre (bilinear,
-  // wrapping across the seam).
-  glm::vec3 colorAlong(glm::vec3 direction) const;
+  // Simplified: the source's colour along each ray from its centre
+  // (bilinear, wrapping across the seam), through the rays' image points
+  // (scratch space the caller keeps).
+  void colorsAlong(std::span<const glm::vec3> directions, std::span<glm::vec2> imagePoints,
+                   std::span<glm::vec3> colors) const;
   // Simplified: the triangles in grid numbering, for the mesh store.
   const SimplifiedTriangles& simplifiedTriangles() const { return simplifiedTriangles_; }
 
 private:
+  glm::vec3 colorAt(glm::vec2 imagePoint) const;  // bilinear, for colorsAlong
   SimplifiedTriangles simplifyKept(const Panorama& panorama, float tolerancePixels) const;
   void adoptSimplified(const Panorama& panorama, SimplifiedTriangles triangles);
 
@@ -134,7 +138,7 @@ private:
   std::vector<uint8_t> orphan_;
   uint32_t pixelVertexCount_ = 0;
   uint32_t keptCount_ = 0;
-  ColorImage texture_;              // simplified: the source's colours, for colorAlong
+  ColorImage texture_;              // simplified: the source's colours, for colorsAlong
   SimplifiedTriangles simplifiedTriangles_;
 };
 

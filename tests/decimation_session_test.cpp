@@ -74,6 +74,18 @@ TEST_CASE("the viewer's run to a relative error measures the dense mean and stop
   // The same threshold as an absolute error: no further step, from the log.
   session.runToError(kFactor * decimate.denseMeanError);
   CHECK(waitUntilIdle(session).step == int(decimate.collapses));
+
+  // A step back leaves the threshold: saved there, the file names none
+  // (reopened, "run to error" starts at decimate's default), and names it
+  // again once the person steps forward to where the run stopped.
+  session.stepBack(1);
+  CHECK(waitUntilIdle(session).step == int(decimate.collapses) - 1);
+  const nlohmann::json steppedBack = session.selection().settings;
+  CHECK_FALSE(steppedBack.contains("max_error"));
+  CHECK_FALSE(steppedBack.contains("relative_error"));
+  session.stepForward(1);
+  CHECK(waitUntilIdle(session).step == int(decimate.collapses));
+  CHECK(session.selection().settings.at("max_error").get<double>() == kFactor * decimate.denseMeanError);
 }
 
 }  // namespace triwalk

@@ -33,10 +33,6 @@ DecimationSession::DecimationSession(const Dataset& dataset, const TriangleError
   // Single steps go as far as the person asks; runs set their own limit.
   options_.maxError = 0.0;
   options_.targetSamples = 0;
-  if (selection) {
-    reachedError_ = selection->maxError;
-    reachedFactor_ = selection->relativeError;
-  }
   if (selection && !selection->initialTriangles.empty()) {
     initial_ = selection->initialTriangles;
     log_ = selection->collapses;
@@ -45,6 +41,12 @@ DecimationSession::DecimationSession(const Dataset& dataset, const TriangleError
     initial_ = selection->triangles;  // a baseline or hand-made selection: decimate on from it
   } else {
     initial_ = datasetMesh(dataset, {}, dataset.manifestPath().string()).triangles();
+  }
+  if (selection) {
+    // The selection's threshold holds where it ends.
+    reachedError_ = selection->maxError;
+    reachedFactor_ = selection->relativeError;
+    reachedStep_ = step_;
   }
   initialSamples_ = ViewMesh(samplePositions(dataset), initial_).vertexCount();
   publish("loading panoramas for the " + describeErrorPanorama(settings.width, settings.stride));
@@ -261,6 +263,7 @@ void DecimationSession::runToErrorNow(double maxError, double factor, const std:
   std::lock_guard lock(mutex_);  // selection() reads them from the UI thread
   reachedError_ = maxError;
   reachedFactor_ = factor;
+  reachedStep_ = step_;
 }
 
 void DecimationSession::runToSamples(int samples) {
@@ -340,7 +343,9 @@ Selection DecimationSession::selection() const {
   selection.stopReason = "saved from the viewer at step " + std::to_string(current.step);
   selection.nextCost = current.nextCost;
   selection.settings = savedSettings_;  // so that the viewer continues the saved selection the same way
-  if (reachedError_ > 0.0) selection.settings.update({{"max_error", reachedError_}, {"relative_error", reachedFactor_}});
+  if (reachedError_ > 0.0 && current.step == reachedStep_) {
+    selection.settings.update({{"max_error", reachedError_}, {"relative_error", reachedFactor_}});
+  }
   return selection;
 }
 

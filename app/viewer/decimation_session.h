@@ -118,10 +118,12 @@ private:
   Snapshot snapshot_;
   std::optional<Inspection> inspection_;
   std::atomic<bool> stopRun_{false};
-  // The last error a run reached (at first the selection's threshold), as
-  // a selection file's max_error and relative_error, so that a saved
-  // selection's "run to error" starts there.
+  // The last error a run reached (at first the selection's threshold) and
+  // the step it stopped at, as a selection file's max_error and
+  // relative_error, so that a selection saved there starts "run to error"
+  // there; saved at any other step, the file names no threshold.
   double reachedError_ = 0.0, reachedFactor_ = 0.0;
+  int reachedStep_ = -1;
   bool quit_ = false;
   // Loader results, handed to the worker under mutex_.
   std::unique_ptr<DatasetTriangleErrors> loadedErrors_;

@@ -1,6 +1,6 @@
 #include "core/geometry/float_arc_tangent.h"
 
-#include <cstring>
+#include <bit>
 
 namespace triwalk {
 
@@ -10,24 +10,12 @@ using namespace arc_tangent_detail;
 
 Floats4 splat(float value) { return Floats4{value, value, value, value}; }
 
-Masks4 bitsOf(Floats4 value) {
-  Masks4 result;
-  std::memcpy(&result, &value, sizeof result);
-  return result;
-}
-
-Floats4 floatsOf(Masks4 value) {
-  Floats4 result;
-  std::memcpy(&result, &value, sizeof result);
-  return result;
-}
-
 // atanFloat of finite, non-negative lanes. Each of its cases is computed by
 // the same operations: the interval's reduction is one quotient, whose
 // numerator and denominator are chosen per lane (x / 1 = x for the lowest
 // interval), and the lanes past its ends take its end values.
 Floats4 atanOfNonNegative(Floats4 x) {
-  const Masks4 magnitude = bitsOf(x);
+  const Masks4 magnitude = std::bit_cast<Masks4>(x);
   const Masks4 huge = magnitude >= 0x4c000000, tiny = magnitude < 0x31000000, low = magnitude < 0x3ee00000;
   const Masks4 first = magnitude < 0x3f300000, second = magnitude < 0x3f980000, third = magnitude < 0x401c0000;
   const Floats4 one = splat(1.0f);
@@ -52,12 +40,12 @@ Floats4 atanOfNonNegative(Floats4 x) {
 }  // namespace
 
 Floats4 atan2Floats(Floats4 y, Floats4 x, Masks4& unhandled) {
-  const Masks4 xBits = bitsOf(x), yBits = bitsOf(y);
+  const Masks4 xBits = std::bit_cast<Masks4>(x), yBits = std::bit_cast<Masks4>(y);
   const Masks4 xMagnitude = xBits & 0x7fffffff, yMagnitude = yBits & 0x7fffffff;
   const Masks4 exponentGap = (yMagnitude - xMagnitude) >> 23;
   unhandled |= (xMagnitude == 0) | (yMagnitude == 0) | (xMagnitude >= 0x7f800000) | (yMagnitude >= 0x7f800000) |
                (xBits == 0x3f800000) | (exponentGap > 60) | (exponentGap < -60);
-  const Floats4 z = atanOfNonNegative(floatsOf(bitsOf(y / x) & 0x7fffffff));
+  const Floats4 z = atanOfNonNegative(std::bit_cast<Floats4>(std::bit_cast<Masks4>(y / x) & 0x7fffffff));
   const Masks4 yNegative = yBits < 0, xNegative = xBits < 0;
   return xNegative ? (yNegative ? (z - kPiLow) - kPiHigh : kPiHigh - (z - kPiLow)) : (yNegative ? -z : z);
 }

@@ -2,7 +2,6 @@
 #include "app/bench/temporary_capture.h"
 #include "core/selection/reference_selection.h"
 
-#include <malloc.h>
 #include <sys/resource.h>
 
 #include <filesystem>
@@ -41,13 +40,6 @@ std::string BenchSelectionErrors::describe() const { return describeErrorPanoram
 
 BenchDecimation runBenchDecimation(const Dataset& dataset, const BenchSelectionErrors& errorChoice) {
   BenchDecimation result;
-  // What earlier work freed (a capture, another decimation) goes back to
-  // the system first: the layer cache's budget is sized by the memory
-  // available once the views are loaded, and the C library would keep the
-  // freed heap: the scaling row's second decimation got an 11.1 GiB
-  // budget where `decimate` in a process of its own gets 14.1
-  // (docs/BENCHMARKS.md).
-  malloc_trim(0);
   result.peakIsOwn = resetPeakResident();
   TriangleErrorSettings settings;
   settings.width = errorChoice.width;

@@ -750,21 +750,22 @@ TEST_CASE("the selection's errors on a lattice: the whole warp's blend at its pi
     const int destination = requests[k].destination;
     const glm::vec3 position = dataset.sample(destination).position;
     const DestinationCamera camera = DestinationCamera::panorama(position, 64, 32);
-    std::vector<CompactLayer> layers;
+    DecodedLayerRow layers[3];
     glm::vec3 sourcePositions[3];
     for (int i = 0; i < 3; ++i) {
       const WarpSource& source = whole.source(requests[k].references[size_t(i)]);
-      layers.emplace_back(warpToCamera(source, camera, settings.synthesis.warp.method, LayerReliability::Omitted));
+      const CompactLayer layer(warpToCamera(source, camera, settings.synthesis.warp.method, LayerReliability::Omitted));
+      layer.decodeRow(0, layer.pixelCount(), layers[i]);
       sourcePositions[i] = source.position();
     }
-    const CompactLayer* pointers[3] = {&layers[0], &layers[1], &layers[2]};
+    const DecodedLayerRow* pointers[3] = {&layers[0], &layers[1], &layers[2]};
     const std::vector<float> weights = blendWeights(position, sourcePositions, settings.synthesis.blend);
     const ColorImage& truth = whole.sampleDisplay(destination);
     ErrorAccumulator expected(64, 32, settings.error, 2);
     for (int y = 0; y < 32; y += 2) {
       for (int x = 0; x < 64; x += 2) {
         const size_t i = size_t(y) * 64 + size_t(x);
-        const BlendedPixel pixel = blendPixelOf<CompactLayer>(pointers, weights, i, settings.synthesis.blend);
+        const BlendedPixel pixel = blendPixelOf<DecodedLayerRow>(pointers, weights, i, settings.synthesis.blend);
         expected.add(y, displayColorFast(pixel.color), pixel.hole, truth.pixels[i]);
       }
     }

@@ -8,8 +8,6 @@ namespace {
 
 using namespace arc_tangent_detail;
 
-Floats4 splat(float value) { return Floats4{value, value, value, value}; }
-
 // atanFloat of finite, non-negative lanes. Each of its cases is computed by
 // the same operations: the interval's reduction is one quotient, whose
 // numerator and denominator are chosen per lane (x / 1 = x for the lowest

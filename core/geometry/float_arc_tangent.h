@@ -17,6 +17,8 @@
 // precision). Compiled without contraction into fused multiply-adds
 // (the project's -ffp-contract=off), which would round differently.
 
+#include "core/support/float_lanes.h"
+
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -139,10 +141,6 @@ inline float hypotFloat(float x, float y) {
   }
   return float(std::sqrt(double(x) * double(x) + double(y) * double(y)));
 }
-
-// Four lanes of float, and their masks (all bits set where true).
-using Floats4 = float __attribute__((vector_size(16)));
-using Masks4 = int32_t __attribute__((vector_size(16)));
 
 // atan2Float lane by lane, for the lanes it leaves out of `unhandled`: it
 // sets the lanes whose inputs take one of atan2Float's special cases (a

@@ -2,9 +2,11 @@
 
 #include "core/image/color.h"
 #include "core/io/simplified_mesh_store.h"
+#include "core/synthesis/blended_row_error.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -178,14 +180,12 @@ double DatasetTriangleErrors::sampleError(const Triangle& triangle, int destinat
                                            ? LayerReliability::Computed
                                            : LayerReliability::Omitted;
   std::shared_ptr<const CompactLayer> layers[3];
-  const CompactLayer* pointers[3];
   glm::vec3 sourcePositions[3];
   for (int k = 0; k < 3; ++k) {
     const WarpSource& source = *sources_[size_t(triangle[size_t(k)])];
     layers[k] = layerCache_.get(triangle[size_t(k)], destination, [&] {
       return warpToCamera(source, camera, settings_.synthesis.warp.method, reliability);
     });
-    pointers[k] = layers[k].get();
     sourcePositions[k] = source.position();
   }
   const std::vector<float> weights = blendWeights(position, sourcePositions, settings_.synthesis.blend);
@@ -193,7 +193,10 @@ double DatasetTriangleErrors::sampleError(const Triangle& triangle, int destinat
   ErrorAccumulator accumulator(truth.width, truth.height, settings_.error, stride);
   if (settings_.synthesis.holes == HoleMode::Fill) {
     // The fill needs the whole blended image.
-    BlendedView view = blendLayersOf<CompactLayer>(pointers, weights, truth.width, truth.height, settings_.synthesis.blend);
+    DecodedLayerRow whole[3];
+    for (int k = 0; k < 3; ++k) layers[k]->decodeRow(0, layers[k]->pixelCount(), whole[k]);
+    const DecodedLayerRow* pointers[3] = {&whole[0], &whole[1], &whole[2]};
+    BlendedView view = blendLayersOf<DecodedLayerRow>(pointers, weights, truth.width, truth.height, settings_.synthesis.blend);
     fillHoles(view, settings_.synthesis.blend.epsilon);
     tbb::parallel_for(0, truth.height, [&](int y) {
       for (int x = 0; x < truth.width; ++x) {
@@ -203,16 +206,17 @@ double DatasetTriangleErrors::sampleError(const Triangle& triangle, int destinat
     });
     return accumulator.result().total;
   }
-  // Blend and compare pixel by pixel of the lattice, without building the
+  // Blend and compare row by row of the lattice, without building the
   // blended image.
-  const int layerWidth = camera.layerWidth();
-  tbb::parallel_for(0, camera.layerHeight(), [&](int row) {
-    const int y = row * stride;
-    for (int column = 0; column < layerWidth; ++column) {
-      const size_t i = size_t(row) * size_t(layerWidth) + size_t(column);
-      const BlendedPixel pixel = blendPixelOf<CompactLayer>(pointers, weights, i, settings_.synthesis.blend);
-      accumulator.add(y, displayColorFast(pixel.color), pixel.hole,
-                      truth.pixels[size_t(y) * size_t(truth.width) + size_t(column * stride)]);
+  const size_t layerWidth = size_t(camera.layerWidth());
+  tbb::parallel_for(tbb::blocked_range<int>(0, camera.layerHeight()), [&](const tbb::blocked_range<int>& rows) {
+    DecodedLayerRow decoded[3];
+    const DecodedLayerRow* pointers[3] = {&decoded[0], &decoded[1], &decoded[2]};
+    for (int row = rows.begin(); row != rows.end(); ++row) {
+      for (int k = 0; k < 3; ++k) layers[k]->decodeRow(size_t(row) * layerWidth, layerWidth, decoded[k]);
+      const int y = row * stride;
+      addBlendedRowError(pointers, weights, settings_.synthesis.blend, &truth.pixels[size_t(y) * size_t(truth.width)],
+                         size_t(stride), y, accumulator);
     }
   });
   return accumulator.result().total;

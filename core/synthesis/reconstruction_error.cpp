@@ -34,6 +34,18 @@ ErrorAccumulator::ErrorAccumulator(int width, int height, const ErrorOptions& op
   }
 }
 
+void ErrorAccumulator::addRow(int y, std::span<const float> squared, std::span<const float> largest,
+                              std::span<const uint8_t> hole) {
+  TRIWALK_CHECK(largest.size() == squared.size() && hole.size() == squared.size(), "one difference per pixel");
+  double squaredSum = rowSquared_[size_t(y)], badCount = rowBad_[size_t(y)];
+  for (size_t i = 0; i < squared.size(); ++i) {
+    squaredSum += double(squared[i]);
+    badCount += isBad(largest[i], hole[i] != 0) ? 1.0 : 0.0;
+  }
+  rowSquared_[size_t(y)] = squaredSum;
+  rowBad_[size_t(y)] = badCount;
+}
+
 ReconstructionError ErrorAccumulator::result() const {
   double weightSum = 0.0, squaredSum = 0.0, badSum = 0.0;
   for (size_t y = 0; y < rowWeight_.size(); y += size_t(stride_)) {

@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -57,12 +59,19 @@ public:
     const float squared = glm::dot(difference, difference);
     const float largest = std::max(difference.r, std::max(difference.g, difference.b));
     rowSquared_[size_t(y)] += double(squared);
-    rowBad_[size_t(y)] += (hole || double(largest) > badThreshold_) ? 1.0 : 0.0;
+    rowBad_[size_t(y)] += isBad(largest, hole) ? 1.0 : 0.0;
     return hole ? 1.0f : std::sqrt(squared / 3.0f);
   }
+  // The pixels of row y whose differences were computed elsewhere, as add
+  // computes them (four at a time: core/synthesis/blended_row_error.h):
+  // each one's squared channel difference, largest channel difference and
+  // hole flag. The same sums as adding them one by one.
+  void addRow(int y, std::span<const float> squared, std::span<const float> largest, std::span<const uint8_t> hole);
   ReconstructionError result() const;
 
 private:
+  bool isBad(float largest, bool hole) const { return hole || double(largest) > badThreshold_; }
+
   int width_;
   int stride_;
   ErrorOptions options_;

@@ -1,5 +1,8 @@
 #include "core/synthesis/warp_layer_cache.h"
 
+#include "core/image/half_float.h"
+#include "core/support/errors.h"
+
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
@@ -15,16 +18,32 @@
 namespace triwalk {
 
 CompactLayer::CompactLayer(const WarpLayer& layer)
-    : values_(4 * layer.covered.size()), reliability_(layer.reliability.empty() ? 0 : layer.covered.size()) {
-  const Imath::half notCovered(std::numeric_limits<float>::quiet_NaN());
-  for (size_t i = 0; i < layer.covered.size(); ++i) {
+    : pixelCount_(layer.covered.size()), values_(4 * pixelCount_), reliability_(layer.reliability.size()) {
+  std::vector<float> values(values_.size());
+  float* red = values.data();
+  float* green = red + pixelCount_;
+  float* blue = green + pixelCount_;
+  float* distance = blue + pixelCount_;
+  for (size_t i = 0; i < pixelCount_; ++i) {
     const glm::vec3 color = layer.color.pixels[i];
-    values_[4 * i + 0] = Imath::half(color.r);
-    values_[4 * i + 1] = Imath::half(color.g);
-    values_[4 * i + 2] = Imath::half(color.b);
-    values_[4 * i + 3] = layer.covered[i] ? Imath::half(layer.distance.pixels[i]) : notCovered;
+    red[i] = color.r;
+    green[i] = color.g;
+    blue[i] = color.b;
+    distance[i] = layer.covered[i] ? layer.distance.pixels[i] : std::numeric_limits<float>::quiet_NaN();
   }
-  for (size_t i = 0; i < reliability_.size(); ++i) reliability_[i] = Imath::half(layer.reliability[i]);
+  floatsToHalves(values, values_);
+  floatsToHalves(layer.reliability, reliability_);
+}
+
+void CompactLayer::decodeRow(size_t first, size_t count, DecodedLayerRow& row) const {
+  TRIWALK_CHECK(first + count <= pixelCount_, "a row inside the layer");
+  std::vector<float>* planes[4] = {&row.red, &row.green, &row.blue, &row.distance};
+  for (size_t plane = 0; plane < 4; ++plane) {
+    planes[plane]->resize(count);
+    halvesToFloats(std::span(values_).subspan(plane * pixelCount_ + first, count), *planes[plane]);
+  }
+  row.reliability.resize(reliability_.empty() ? 0 : count);
+  if (!reliability_.empty()) halvesToFloats(std::span(reliability_).subspan(first, count), row.reliability);
 }
 
 size_t WarpLayerCache::bytes() const {

@@ -9,8 +9,7 @@
 
 #include "core/synthesis/warp.h"
 
-#include <Imath/half.h>
-
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <list>
@@ -21,26 +20,40 @@
 
 namespace triwalk {
 
-// A warped layer in half floats: per pixel linear r, g, b and the distance
-// (NaN where the source put nothing, +inf for sky), and the reliability
-// when the layer has one.
-// Read through the same per-pixel view as WarpLayer, for the blend.
+// A row of a cached layer in floats, one array per channel (so that a
+// blend can read four pixels at a time: core/synthesis/blended_row_error.h),
+// also read through the same per-pixel view as WarpLayer. Converting a row
+// at a time lets the conversion use the processor's half instructions
+// (core/image/half_float.h).
+struct DecodedLayerRow {
+  std::vector<float> red, green, blue;  // linear
+  std::vector<float> distance;          // NaN where not covered
+  std::vector<float> reliability;       // empty: 1 everywhere
+
+  bool coveredAt(size_t pixel) const { return !std::isnan(distance[pixel]); }
+  float distanceAt(size_t pixel) const { return distance[pixel]; }
+  glm::vec3 colorAt(size_t pixel) const { return {red[pixel], green[pixel], blue[pixel]}; }
+  float reliabilityAt(size_t pixel) const { return reliability.empty() ? 1.0f : reliability[pixel]; }
+};
+
+// A warped layer in half floats: linear r, g, b and the distance (NaN
+// where the source put nothing, +inf for sky), and the reliability when
+// the layer has one; each a plane of its own, read a row at a time.
 class CompactLayer {
 public:
   explicit CompactLayer(const WarpLayer& layer);
 
-  bool coveredAt(size_t pixel) const { return !values_[4 * pixel + 3].isNan(); }
-  float distanceAt(size_t pixel) const { return float(values_[4 * pixel + 3]); }
-  glm::vec3 colorAt(size_t pixel) const {
-    const Imath::half* v = &values_[4 * pixel];
-    return {float(v[0]), float(v[1]), float(v[2])};
-  }
-  float reliabilityAt(size_t pixel) const { return reliability_.empty() ? 1.0f : float(reliability_[pixel]); }
-  size_t bytes() const { return (values_.size() + reliability_.size()) * sizeof(Imath::half); }
+  // Pixels [first, first + count) into row (the whole layer: first 0,
+  // count pixelCount()).
+  void decodeRow(size_t first, size_t count, DecodedLayerRow& row) const;
+
+  size_t pixelCount() const { return pixelCount_; }
+  size_t bytes() const { return (values_.size() + reliability_.size()) * sizeof(uint16_t); }
 
 private:
-  std::vector<Imath::half> values_;
-  std::vector<Imath::half> reliability_;
+  size_t pixelCount_;
+  std::vector<uint16_t> values_;  // half floats' bits: the planes red, green, blue, distance
+  std::vector<uint16_t> reliability_;
 };
 
 class WarpLayerCache {

@@ -45,6 +45,7 @@ __attribute__((target("avx,f16c"))) void hardwareFloatsToHalves(const float* flo
 }
 #endif
 
+// Whether to convert by F16C; asking for it where there is none is a bug.
 bool useHardware(HalfConversion conversion) {
   if (conversion == HalfConversion::Portable) return false;
   const bool available = hardwareHalfConversion();
@@ -75,21 +76,23 @@ bool hardwareHalfConversion() {
 
 void halvesToFloats(std::span<const uint16_t> halves, std::span<float> floats, HalfConversion conversion) {
   TRIWALK_CHECK(halves.size() == floats.size(), "one float per half");
+  if (useHardware(conversion)) {
 #if defined(TRIWALK_F16C_PATH)
-  if (useHardware(conversion)) return hardwareHalvesToFloats(halves.data(), floats.data(), halves.size());
-#else
-  useHardware(conversion);
+    hardwareHalvesToFloats(halves.data(), floats.data(), halves.size());
+    return;
 #endif
+  }
   portableHalvesToFloats(halves.data(), floats.data(), halves.size());
 }
 
 void floatsToHalves(std::span<const float> floats, std::span<uint16_t> halves, HalfConversion conversion) {
   TRIWALK_CHECK(halves.size() == floats.size(), "one half per float");
+  if (useHardware(conversion)) {
 #if defined(TRIWALK_F16C_PATH)
-  if (useHardware(conversion)) return hardwareFloatsToHalves(floats.data(), halves.data(), floats.size());
-#else
-  useHardware(conversion);
+    hardwareFloatsToHalves(floats.data(), halves.data(), floats.size());
+    return;
 #endif
+  }
   portableFloatsToHalves(floats.data(), halves.data(), floats.size());
 }
 

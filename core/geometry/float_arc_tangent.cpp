@@ -43,7 +43,7 @@ Floats4 atan2Floats(Floats4 y, Floats4 x, Masks4& unhandled) {
   const Masks4 exponentGap = (yMagnitude - xMagnitude) >> 23;
   unhandled |= (xMagnitude == 0) | (yMagnitude == 0) | (xMagnitude >= 0x7f800000) | (yMagnitude >= 0x7f800000) |
                (xBits == 0x3f800000) | (exponentGap > 60) | (exponentGap < -60);
-  const Floats4 z = atanOfNonNegative(std::bit_cast<Floats4>(std::bit_cast<Masks4>(y / x) & 0x7fffffff));
+  const Floats4 z = atanOfNonNegative(absolute(y / x));
   const Masks4 yNegative = yBits < 0, xNegative = xBits < 0;
   return xNegative ? (yNegative ? (z - kPiLow) - kPiHigh : kPiHigh - (z - kPiLow)) : (yNegative ? -z : z);
 }

@@ -5,6 +5,7 @@
 // what a scalar function does, so it gives the same bits (the project
 // compiles without contraction into fused multiply-adds).
 
+#include <bit>
 #include <cstdint>
 #include <cstring>
 
@@ -14,6 +15,9 @@ using Floats4 = float __attribute__((vector_size(16)));
 using Masks4 = int32_t __attribute__((vector_size(16)));
 
 inline Floats4 splat(float value) { return Floats4{value, value, value, value}; }
+
+// std::fabs lane by lane: the sign bit cleared.
+inline Floats4 absolute(Floats4 lanes) { return std::bit_cast<Floats4>(std::bit_cast<Masks4>(lanes) & 0x7fffffff); }
 
 // Four consecutive floats, at any alignment.
 inline Floats4 loadFloats4(const float* values) {

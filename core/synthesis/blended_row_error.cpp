@@ -4,7 +4,6 @@
 #include "core/support/errors.h"
 #include "core/support/float_lanes.h"
 
-#include <bit>
 #include <limits>
 
 namespace triwalk {
@@ -13,8 +12,6 @@ namespace {
 
 constexpr size_t kMaxLayers = 8;
 constexpr size_t kBlockPixels = 64;  // differences handed to the accumulator at once
-
-Floats4 absolute(Floats4 x) { return std::bit_cast<Floats4>(std::bit_cast<Masks4>(x) & 0x7fffffff); }
 
 // linearToSrgbFast lane by lane (std::clamp, then the table's interpolation).
 Floats4 displayChannel(Floats4 linear) {
@@ -83,16 +80,14 @@ void addBlendedRowError(std::span<const DecodedLayerRow* const> layers, std::spa
     const size_t block = std::min(kBlockPixels, (count - pixel) / 4 * 4);
     for (size_t lane = 0; lane < block; lane += 4, pixel += 4) {
       const Blended4 blended = blend4(layers, weights, options, pixel);
-      const glm::vec3* t[4] = {&truth[pixel * truthStride], &truth[(pixel + 1) * truthStride],
-                               &truth[(pixel + 2) * truthStride], &truth[(pixel + 3) * truthStride]};
       // ErrorAccumulator::add: holes compare black with the truth.
-      const Floats4 zero = splat(0.0f);
-      const Floats4 red = absolute((blended.hole ? zero : displayChannel(blended.red)) -
-                                   Floats4{t[0]->r, t[1]->r, t[2]->r, t[3]->r});
-      const Floats4 green = absolute((blended.hole ? zero : displayChannel(blended.green)) -
-                                     Floats4{t[0]->g, t[1]->g, t[2]->g, t[3]->g});
-      const Floats4 blue = absolute((blended.hole ? zero : displayChannel(blended.blue)) -
-                                    Floats4{t[0]->b, t[1]->b, t[2]->b, t[3]->b});
+      const auto difference = [&](Floats4 linear, int channel) {
+        const Floats4 truthLanes = {truth[pixel * truthStride][channel], truth[(pixel + 1) * truthStride][channel],
+                                    truth[(pixel + 2) * truthStride][channel], truth[(pixel + 3) * truthStride][channel]};
+        return absolute((blended.hole ? splat(0.0f) : displayChannel(linear)) - truthLanes);
+      };
+      const Floats4 red = difference(blended.red, 0), green = difference(blended.green, 1),
+                    blue = difference(blended.blue, 2);
       storeFloats4(red * red + green * green + blue * blue, &squared[lane]);  // glm::dot's order
       const Floats4 greenOrBlue = green < blue ? blue : green;                 // std::max(g, b)
       storeFloats4(red < greenOrBlue ? greenOrBlue : red, &largest[lane]);

@@ -255,10 +255,14 @@ TEST_CASE("warp results are identical for any thread count") {
   CHECK(one.covered == all.covered);
 }
 
-TEST_CASE("row spans warp to the same layer as testing every pixel of each range, testing a fraction of them") {
+TEST_CASE("row spans and the row loop warp to the same layer as the per-pixel test of each range, testing a fraction of it") {
   // The room's walls, floor and ceiling simplify to triangles tens of
   // columns wide, some around a pole or across the seam; a yawed
-  // destination moves the seam through them.
+  // destination moves the seam through them. The plain scan tests every
+  // pixel of each triangle's range with the resolve's own coverage test,
+  // so this also holds the row loop (SphericalTriangle::scanRow) to it:
+  // a loop that rejects a pixel the test accepts changes the layer, one
+  // that accepts a pixel it rejects fails the resolve.
   for (const SourceMesh mesh : {SourceMesh::Simplified, SourceMesh::Grid}) {
     const std::unique_ptr<WarpSource> source = pillarRoomSource(mesh);
     for (const float yaw : {0.0f, 1.3f, -2.9f}) {

@@ -299,6 +299,35 @@ struct Coverage {
   float inverseDistance;
 };
 
+// Per-column and per-row factors of the destination's pixel directions.
+struct DirectionTable {
+  std::vector<double> cosTheta, sinTheta, cosPhi, sinPhi;
+  std::vector<double> tanLatitude;  // |tan| of the latitude k rows from a pole, k <= H / 2
+  int width;
+  double yaw;
+  explicit DirectionTable(const EquirectProjection& projection) : width(projection.width), yaw(projection.yaw) {
+    for (int u = 0; u < projection.width; ++u) {
+      const glm::vec3 d = projection.pixelDirection(u, projection.height / 2);
+      const double theta = std::atan2(double(d.y), double(d.x));
+      cosTheta.push_back(std::cos(theta));
+      sinTheta.push_back(std::sin(theta));
+    }
+    for (int v = 0; v < projection.height; ++v) {
+      const double phi = 0.5 * std::numbers::pi - std::numbers::pi * (v + 0.5) / projection.height;
+      cosPhi.push_back(std::cos(phi));
+      sinPhi.push_back(std::sin(phi));
+    }
+    for (int k = 0; k <= projection.height / 2; ++k) {
+      tanLatitude.push_back(k == 0 ? 1e30 : 1.0 / std::tan(std::numbers::pi * k / projection.height));
+    }
+  }
+  glm::dvec3 at(int u, int v) const { return {cosPhi[size_t(v)] * cosTheta[size_t(u)], cosPhi[size_t(v)] * sinTheta[size_t(u)], sinPhi[size_t(v)]}; }
+  // The (fractional) column whose centre looks at longitude theta, up to whole turns.
+  double columnAt(double theta) const {
+    return (theta + std::numbers::pi - yaw) * width / (2.0 * std::numbers::pi) - 0.5;
+  }
+};
+
 // Panorama destinations: exact coverage on the sphere. A pixel's ray
 // direction w lies in the triangle's cone when the three triple products
 // det(r_i+1, r_i+2, w) share the sign of det(r0, r1, r2); normalized, they
@@ -334,40 +363,47 @@ public:
     return true;
   }
 
+  // The raster's inner loop: row y's columns first..last (unwrapped: a
+  // whole turn beyond the panorama's, every stride-th), calling
+  // hit(x, inverseDistance) at each pixel centre covers() accepts. The
+  // same products and sums as covers() at directions.at(x, y), in the
+  // same order, so the same pixels and bits; what is constant along the
+  // row (its factors, the three z terms) is read and multiplied once, not
+  // again after every z-buffer update, which the compiler must assume
+  // could change it.
+  template <class Hit>
+  void scanRow(const DirectionTable& directions, int y, int first, int last, int stride, Hit&& hit) const {
+    const double cosPhi = directions.cosPhi[size_t(y)], sinPhi = directions.sinPhi[size_t(y)];
+    const double* cosTheta = directions.cosTheta.data();
+    const double* sinTheta = directions.sinTheta.data();
+    const int width = directions.width;
+    const double volume = volume_;
+    double nx[3], ny[3], zTerm[3];
+    for (int i = 0; i < 3; ++i) nx[i] = normals_[i].x, ny[i] = normals_[i].y, zTerm[i] = normals_[i].z * sinPhi;
+    for (int column = first; column <= last; column += stride) {
+      const int x = column < 0 ? column + width : column >= width ? column - width : column;
+      const double dx = cosPhi * cosTheta[x], dy = cosPhi * sinTheta[x];
+      const double w0 = nx[0] * dx + ny[0] * dy + zTerm[0];
+      if (w0 * volume < 0.0) continue;
+      const double w1 = nx[1] * dx + ny[1] * dy + zTerm[1];
+      if (w1 * volume < 0.0) continue;
+      const double w2 = nx[2] * dx + ny[2] * dy + zTerm[2];
+      if (w2 * volume < 0.0) continue;
+      double sum = 0.0;
+      sum += w0;
+      sum += w1;
+      sum += w2;
+      if (!(sum * volume > 0.0)) continue;
+      hit(x, atInfinity_ ? 0.0f : float(sum / volume));
+    }
+  }
+
 private:
   glm::dvec3 normals_[3];
   double volume_ = 0.0;
   bool atInfinity_;
 };
 
-// Per-column and per-row factors of the destination's pixel directions.
-struct DirectionTable {
-  std::vector<double> cosTheta, sinTheta, cosPhi, sinPhi;
-  std::vector<double> tanLatitude;  // |tan| of the latitude k rows from a pole, k <= H / 2
-  int width;
-  double yaw;
-  explicit DirectionTable(const EquirectProjection& projection) : width(projection.width), yaw(projection.yaw) {
-    for (int u = 0; u < projection.width; ++u) {
-      const glm::vec3 d = projection.pixelDirection(u, projection.height / 2);
-      const double theta = std::atan2(double(d.y), double(d.x));
-      cosTheta.push_back(std::cos(theta));
-      sinTheta.push_back(std::sin(theta));
-    }
-    for (int v = 0; v < projection.height; ++v) {
-      const double phi = 0.5 * std::numbers::pi - std::numbers::pi * (v + 0.5) / projection.height;
-      cosPhi.push_back(std::cos(phi));
-      sinPhi.push_back(std::sin(phi));
-    }
-    for (int k = 0; k <= projection.height / 2; ++k) {
-      tanLatitude.push_back(k == 0 ? 1e30 : 1.0 / std::tan(std::numbers::pi * k / projection.height));
-    }
-  }
-  glm::dvec3 at(int u, int v) const { return {cosPhi[size_t(v)] * cosTheta[size_t(u)], cosPhi[size_t(v)] * sinTheta[size_t(u)], sinPhi[size_t(v)]}; }
-  // The (fractional) column whose centre looks at longitude theta, up to whole turns.
-  double columnAt(double theta) const {
-    return (theta + std::numbers::pi - yaw) * width / (2.0 * std::numbers::pi) - 0.5;
-  }
-};
 
 // The candidate pixels of a spherical triangle: its rows and columns from
 // the vertices' image points, whole rows when it contains a pole, columns
@@ -695,10 +731,18 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
           const auto scanRow = [&](int y, int first, int last) {
             first = zBuffer.firstOnLattice(first);
             if (first <= last) localTested += uint64_t((last - first) / stride + 1);
+            const auto hit = [&](int x, float inverseDistance) {
+              atomicMin(zBuffer.at(x, y), makeKey(distanceFromInverse(inverseDistance), payload));
+            };
+            if (raster == PanoramaRaster::RowSpans) {
+              triangle.scanRow(*directions, y, first, last, stride, hit);
+              return;
+            }
+            // The plain scan tests each pixel with covers() itself: the
+            // reference the row loop is checked against, bit for bit.
             for (int column = first; column <= last; column += stride) {
               const int x = column < 0 ? column + width : column >= width ? column - width : column;
-              if (!triangle.covers(directions->at(x, y), coverage)) continue;
-              atomicMin(zBuffer.at(x, y), makeKey(distanceFromInverse(coverage.inverseDistance), payload));
+              if (triangle.covers(directions->at(x, y), coverage)) hit(x, coverage.inverseDistance);
             }
           };
           const int firstRow = zBuffer.firstOnLattice(range.y0);
@@ -750,6 +794,10 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
     std::vector<size_t> rayPixels;
     std::vector<glm::vec2> rayImagePoints;
     std::vector<glm::vec3> rayColors;
+    // Neighbouring pixels mostly share their winner: its spherical
+    // triangle is set up once for the run of them.
+    std::optional<SphericalTriangle> winner;
+    uint32_t winnerPayload = kPointPayload;  // no triangle's payload
     for (int row = rows.begin(); row != rows.end(); ++row) {
       rays.clear();
       rayPixels.clear();
@@ -771,8 +819,11 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
         const ProjectedVertex* v[3] = {&projected[indices[0]], &projected[indices[1]], &projected[indices[2]]};
         Coverage coverage;
         // The same arithmetic as in rasterization, so the winner covers the centre.
-        const bool covered = equirect ? SphericalTriangle(v, source.atInfinity(indices[0])).covers(directions->at(x, y), coverage)
-                                      : PlanarTriangle(v).covers(x, y, coverage);
+        if (equirect && payload != winnerPayload) {
+          winner.emplace(v, source.atInfinity(indices[0]));
+          winnerPayload = payload;
+        }
+        const bool covered = equirect ? winner->covers(directions->at(x, y), coverage) : PlanarTriangle(v).covers(x, y, coverage);
         TRIWALK_CHECK(covered, "z-buffer winner does not cover its pixel");
         const glm::vec3 a = source.point(indices[0]), b = source.point(indices[1]), c = source.point(indices[2]);
         // The covered point (a direction at infinity).

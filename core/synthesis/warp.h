@@ -232,10 +232,12 @@ struct WarpLayer {
 enum class LayerReliability { Computed, Omitted };
 
 // Which pixel centres of a panorama destination the raster tests against a
-// triangle: those of each row's span (the default), or every one of the
-// triangle's range (the plain scan, kept to measure the spans against).
-// Both give the same layer: the span only leaves out centres no triangle
-// edge admits.
+// triangle, and how: those of each row's span in the row loop (the
+// default), or every one of the triangle's range by the resolve's own
+// per-pixel test (the plain scan, kept to measure the spans and the row
+// loop against). Both give the same layer, bit for bit: the span only
+// leaves out centres no triangle edge admits, and the row loop does each
+// pixel's arithmetic as the per-pixel test does.
 enum class PanoramaRaster { RowSpans, BoundingBox };
 
 WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destination, WarpMethod method,

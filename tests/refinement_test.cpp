@@ -836,4 +836,53 @@ TEST_CASE("the warped-layer cache's budget changes how many layers are warped, n
   CHECK(automaticLayerCacheBytes() >= size_t(1) << 30);
 }
 
+TEST_CASE("a layer cache short of memory lowers its budget by the shortfall, never below its floor, never up again") {
+  // Layers of 8x4 pixels (4 planes of halves, no reliability: 256 bytes).
+  const auto layerOf = [] {
+    WarpLayer layer{ColorImage(8, 4), ScalarImage(8, 4, 1.0f), std::vector<uint8_t>(32, 1), 0, 0, {}, {}};
+    return layer;
+  };
+  const size_t layerBytes = CompactLayer(layerOf()).bytes();
+  REQUIRE(layerBytes == 256);
+  WarpLayerCache cache(1000 * layerBytes);
+  size_t available = 1 << 30;
+  const size_t reserve = 100 * layerBytes, floor = 40 * layerBytes;
+  cache.watchMemory([&]() -> std::optional<size_t> { return available; }, reserve, floor);
+  int next = 0;
+  const auto missMany = [&](uint64_t misses) {
+    for (uint64_t i = 0; i < misses; ++i, ++next) cache.get(next, 0, layerOf);
+  };
+  missMany(2 * WarpLayerCache::kMissesBetweenChecks);
+  CHECK(cache.budgetCuts() == 0);
+  CHECK(cache.budgetBytes() == 1000 * layerBytes);
+  CHECK(cache.bytes() == 128 * layerBytes);
+  // Another process takes memory: 30 layers' worth short of the reserve.
+  // Nothing changes before the next check, then the budget drops by the
+  // shortfall below what the cache holds.
+  available = reserve - 30 * layerBytes;
+  missMany(WarpLayerCache::kMissesBetweenChecks - 1);
+  CHECK(cache.budgetCuts() == 0);
+  missMany(1);
+  CHECK(cache.budgetCuts() == 1);
+  CHECK(cache.budgetBytes() == (192 - 30) * layerBytes);
+  CHECK(cache.bytes() == (192 - 30) * layerBytes);
+  // The most recent layers stay; the oldest went.
+  const uint64_t misses = cache.misses();
+  cache.get(next - 1, 0, layerOf);
+  cache.get(0, 0, layerOf);
+  CHECK(cache.misses() == misses + 1);
+  // Memory back: the budget stays where it is.
+  available = size_t(1) << 30;
+  missMany(2 * WarpLayerCache::kMissesBetweenChecks);
+  CHECK(cache.budgetCuts() == 1);
+  CHECK(cache.budgetBytes() == (192 - 30) * layerBytes);
+  // Nothing left at all: down to the floor, not to nothing.
+  available = 0;
+  missMany(2 * WarpLayerCache::kMissesBetweenChecks);
+  CHECK(cache.budgetBytes() == floor);
+  CHECK(cache.bytes() <= floor);
+  CHECK(cache.bytes() > 0);
+  CHECK(availableMemoryBytes().has_value());
+}
+
 }  // namespace triwalk

@@ -68,7 +68,7 @@ DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const Trian
   });
   progress.finish();
   throwIfInterrupted();
-  if (!settings.layerCacheBytes) layerCache_.setBudgetBytes(automaticLayerCacheBytes());
+  if (!settings.layerCacheBytes) budgetByMachineMemory(layerCache_);
 }
 
 const ColorImage& DatasetTriangleErrors::probeDisplay(int probe) const {

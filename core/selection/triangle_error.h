@@ -118,8 +118,8 @@ struct TriangleErrorSettings {
   // column of that panorama: a power of two, 1 for every pixel. errorAt,
   // which judges selections, always reads every pixel.
   int stride = 1;
-  // Warped layers kept for reuse; none: automaticLayerCacheBytes() once
-  // the views are loaded, so that it counts what they took.
+  // Warped layers kept for reuse; none: budgetByMachineMemory once the
+  // views are loaded, so that it counts what they took.
   std::optional<size_t> layerCacheBytes;
   TriangleDestinations destinations = TriangleDestinations::Centroid;
   SynthesisOptions synthesis{.warp = {}, .blend = {}, .holes = kDefaultErrorHoles};

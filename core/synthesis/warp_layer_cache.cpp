@@ -85,20 +85,56 @@ std::shared_ptr<const CompactLayer> WarpLayerCache::get(int source, int destinat
     missesAfterEviction_ += evicted_.erase(key);
   }
   auto layer = std::make_shared<const CompactLayer>(make());
-  std::lock_guard lock(mutex_);
-  const auto found = index_.find(key);
-  if (found != index_.end()) return found->second->second;  // another thread made it meanwhile
-  recency_.emplace_front(key, layer);
-  index_[key] = recency_.begin();
-  bytes_ += layer->bytes();
-  evictOverBudget();
+  bool check = false;
+  {
+    std::lock_guard lock(mutex_);
+    const auto found = index_.find(key);
+    if (found != index_.end()) return found->second->second;  // another thread made it meanwhile
+    recency_.emplace_front(key, layer);
+    index_[key] = recency_.begin();
+    bytes_ += layer->bytes();
+    evictOverBudget();
+    check = watch_.availableBytes && misses_ % kMissesBetweenChecks == 0;
+  }
+  if (check) checkMemory();
   return layer;
 }
 
-namespace {
+void WarpLayerCache::watchMemory(std::function<std::optional<size_t>()> availableBytes, size_t reserveBytes,
+                                 size_t floorBytes) {
+  std::lock_guard lock(mutex_);
+  watch_ = {std::move(availableBytes), reserveBytes, floorBytes};
+}
 
-// MemAvailable from /proc/meminfo (the kernel's estimate of what can be
-// allocated without swapping), or nothing where there is none.
+uint64_t WarpLayerCache::budgetCuts() const {
+  std::lock_guard lock(mutex_);
+  return budgetCuts_;
+}
+
+void WarpLayerCache::checkMemory() {
+  MemoryWatch watch;
+  {
+    std::lock_guard lock(mutex_);
+    watch = watch_;
+  }
+  const std::optional<size_t> available = watch.availableBytes();  // reads a file: outside the lock
+  if (!available || *available >= watch.reserveBytes) return;
+  {
+    std::lock_guard lock(mutex_);
+    const size_t shortfall = watch.reserveBytes - *available;
+    const size_t lowered = std::max(bytes_ > shortfall ? bytes_ - shortfall : 0, watch.floorBytes);
+    if (lowered >= budgetBytes_) return;
+    budgetBytes_ = lowered;
+    ++budgetCuts_;
+    evictOverBudget();
+  }
+#if defined(__GLIBC__)
+  // The dropped layers' pages go back to the kernel, not to the C
+  // library's free lists, where the other process could not have them.
+  malloc_trim(0);
+#endif
+}
+
 std::optional<size_t> availableMemoryBytes() {
   std::ifstream meminfo("/proc/meminfo");
   std::string line;
@@ -110,8 +146,6 @@ std::optional<size_t> availableMemoryBytes() {
   }
   return std::nullopt;
 }
-
-}  // namespace
 
 size_t automaticLayerCacheBytes() {
   // Heap that earlier work in this process freed (another decimation, a
@@ -125,6 +159,14 @@ size_t automaticLayerCacheBytes() {
   const size_t physical = pages > 0 && pageSize > 0 ? size_t(pages) * size_t(pageSize) : size_t(4) << 30;
   const size_t available = availableMemoryBytes().value_or(physical / 2);
   return std::max(std::min(available / 4 * 3, physical / 10 * 6), size_t(1) << 30);
+}
+
+void budgetByMachineMemory(WarpLayerCache& cache) {
+  cache.setBudgetBytes(automaticLayerCacheBytes());
+  const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGE_SIZE);
+  const size_t physical = pages > 0 && pageSize > 0 ? size_t(pages) * size_t(pageSize) : size_t(4) << 30;
+  constexpr size_t kFloor = size_t(256) << 20;
+  cache.watchMemory(availableMemoryBytes, std::max(physical / 16, kFloor), kFloor);
 }
 
 }  // namespace triwalk

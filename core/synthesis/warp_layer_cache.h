@@ -15,6 +15,7 @@
 #include <list>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -73,12 +74,31 @@ public:
   size_t budgetBytes() const;
   // Evicts least recently used layers down to a new budget if it is lower.
   void setBudgetBytes(size_t budgetBytes);
+  // Watches the memory the machine has left (availableBytes, e.g.
+  // availableMemoryBytes), every kMissesBetweenChecks misses: when it
+  // falls below reserveBytes (another process took memory since the
+  // budget was set), the budget drops by the shortfall, never below
+  // floorBytes, and the dropped layers are handed back to the kernel. The
+  // budget never rises again. A long decimation holds most of the
+  // machine's memory in layers, so without this it would be the process
+  // the kernel kills when another one needs memory.
+  void watchMemory(std::function<std::optional<size_t>()> availableBytes, size_t reserveBytes, size_t floorBytes);
+  // How many times the watch lowered the budget.
+  uint64_t budgetCuts() const;
+
+  static constexpr uint64_t kMissesBetweenChecks = 64;
 
 private:
   using Key = uint64_t;
   using Entry = std::pair<Key, std::shared_ptr<const CompactLayer>>;
 
   void evictOverBudget();  // with the lock held
+  void checkMemory();      // without it
+
+  struct MemoryWatch {
+    std::function<std::optional<size_t>()> availableBytes;  // empty: no watch
+    size_t reserveBytes = 0, floorBytes = 0;
+  };
 
   size_t budgetBytes_;
   size_t bytes_ = 0;
@@ -87,7 +107,13 @@ private:
   mutable std::mutex mutex_;
   std::unordered_set<Key> evicted_;  // keys dropped for the budget, kept to count their misses
   uint64_t hits_ = 0, misses_ = 0, missesAfterEviction_ = 0;
+  MemoryWatch watch_;
+  uint64_t budgetCuts_ = 0;
 };
+
+// MemAvailable from /proc/meminfo (the kernel's estimate of what can be
+// allocated without swapping), or nothing where there is none.
+std::optional<size_t> availableMemoryBytes();
 
 // A budget for the cache from the memory left once the views are loaded:
 // three quarters of what the kernel reports available, at most 60% of the
@@ -96,5 +122,11 @@ private:
 // "the warped-layer cache sized by the memory left"); a layer never needed
 // again costs memory only.
 size_t automaticLayerCacheBytes();
+
+// The cache of a long decimation: the budget automaticLayerCacheBytes()
+// gives, watched (WarpLayerCache::watchMemory) so that the machine keeps
+// a sixteenth of its memory (at least 256 MiB) available, the budget
+// never dropping below 256 MiB.
+void budgetByMachineMemory(WarpLayerCache& cache);
 
 }  // namespace triwalk

@@ -299,6 +299,12 @@ struct Coverage {
   float inverseDistance;
 };
 
+// An unwrapped column (at most a turn beyond the panorama's) as a column
+// of a panorama `width` columns wide.
+int wrappedColumn(int column, int width) {
+  return column < 0 ? column + width : column >= width ? column - width : column;
+}
+
 // Per-column and per-row factors of the destination's pixel directions.
 struct DirectionTable {
   std::vector<double> cosTheta, sinTheta, cosPhi, sinPhi;
@@ -381,7 +387,7 @@ public:
     double nx[3], ny[3], zTerm[3];
     for (int i = 0; i < 3; ++i) nx[i] = normals_[i].x, ny[i] = normals_[i].y, zTerm[i] = normals_[i].z * sinPhi;
     for (int column = first; column <= last; column += stride) {
-      const int x = column < 0 ? column + width : column >= width ? column - width : column;
+      const int x = wrappedColumn(column, width);
       const double dx = cosPhi * cosTheta[x], dy = cosPhi * sinTheta[x];
       const double w0 = nx[0] * dx + ny[0] * dy + zTerm[0];
       if (w0 * volume < 0.0) continue;
@@ -403,7 +409,6 @@ private:
   double volume_ = 0.0;
   bool atInfinity_;
 };
-
 
 // The candidate pixels of a spherical triangle: its rows and columns from
 // the vertices' image points, whole rows when it contains a pole, columns
@@ -663,7 +668,7 @@ private:
 void splatPoint(const ProjectedVertex& p, uint32_t vertex, int width, int height, bool wrap, LatticeBuffer& zBuffer) {
   if (!p.valid) return;
   int x = int(std::floor(p.screen.x)), y = int(std::floor(p.screen.y));
-  if (wrap) x = x < 0 ? x + width : x >= width ? x - width : x;  // screen x lies in [0, width]
+  if (wrap) x = wrappedColumn(x, width);  // screen x lies in [0, width]
   if (x < 0 || y < 0 || x >= width || y >= height || !zBuffer.onLattice(x, y)) return;
   atomicMin(zBuffer.at(x, y), makeKey(distanceFromInverse(p.inverseDistance), (vertex << 2) | kPointPayload));
 }
@@ -741,7 +746,7 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
             // The plain scan tests each pixel with covers() itself: the
             // reference the row loop is checked against, bit for bit.
             for (int column = first; column <= last; column += stride) {
-              const int x = column < 0 ? column + width : column >= width ? column - width : column;
+              const int x = wrappedColumn(column, width);
               if (triangle.covers(directions->at(x, y), coverage)) hit(x, coverage.inverseDistance);
             }
           };

@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <set>
 #include <tuple>
 
 namespace triwalk {
@@ -622,6 +623,41 @@ TEST_CASE("Ctrl-C stops the exchange search between chunks of its errors, not af
   // At most the rest of the chunk (64 errors) after the stop was asked.
   CHECK(stopping.computed >= kStopAfter);
   CHECK(stopping.computed < kStopAfter + 64);
+}
+
+TEST_CASE("the refinement's progress line gives the time left of the pass it is in, not of the refinement") {
+  // A pass's count is all a reporter knows; the passes and exchange
+  // searches after it are not, so the time left must say it is the pass's.
+  ProgressReporter bare("refine: move references", 0, true);
+  CHECK(bare.line(false).find("left") == std::string::npos);  // no total: no time left
+  bare.advance(3);
+  bare.setTotal(8, "pass 2");
+  CHECK(bare.line(false).find("3/8") != std::string::npos);
+  CHECK(bare.line(false).find(" of pass 2") != std::string::npos);
+  CHECK(bare.line(true).find("left") == std::string::npos);
+  bare.setTotal(8);
+  CHECK(bare.line(false).find("left") != std::string::npos);
+  CHECK(bare.line(false).find(" of ") == std::string::npos);
+
+  const TwoRooms rooms;
+  ProgressReporter progress("refine: move references", 0, true);
+  std::set<std::string> scopes;  // each " of pass N" the line showed
+  FormulaErrors errors([&](const Triangle& t, int destination) {
+    const std::string line = progress.line(false);
+    const size_t at = line.find(" of pass ");
+    if (at != std::string::npos) scopes.insert(line.substr(at, line.find("  ", at) - at));
+    return rooms.formula(t, destination);
+  });
+  RefinementOptions options;
+  options.radius = 1.5;
+  options.region = &rooms.region;
+  options.maxExchanges = 0;
+  const RefinementResult result =
+      refineSelection(rooms.positions, crowdedLeftRoom(rooms).triangles(), errors, options, &progress);
+  REQUIRE(result.passes >= 2);
+  CHECK(scopes.count(" of pass 1") == 1);
+  CHECK(scopes.count(" of pass 2") == 1);
+  CHECK(scopes.size() <= size_t(result.passes));
 }
 
 namespace {

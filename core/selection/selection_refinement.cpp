@@ -379,7 +379,7 @@ private:
       ++result_.passes;
       const std::vector<int> examine(flagged.begin(), flagged.end());
       flagged.clear();
-      if (progress) progress->setTotal(progress->done() + examine.size());  // time left: of this pass
+      if (progress) progress->setTotal(progress->done() + examine.size(), "pass " + std::to_string(result_.passes));
       for (int moving : examine) {
         throwIfInterrupted();
         if (progress) progress->advance();

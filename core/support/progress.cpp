@@ -87,9 +87,10 @@ void ProgressReporter::setStatus(const std::string& status) {
   status_ = status;
 }
 
-void ProgressReporter::setTotal(size_t total) {
+void ProgressReporter::setTotal(size_t total, std::string scope) {
   std::lock_guard lock(mutex_);
   total_ = total;
+  scope_ = std::move(scope);
 }
 
 void ProgressReporter::finish() {
@@ -101,6 +102,16 @@ void ProgressReporter::finish() {
 
 void ProgressReporter::print(bool final) {
   if (quiet_) return;
+  const std::string text = line(final);
+  if (interactive_) {
+    std::fprintf(stderr, "\r\033[K%s%s", text.c_str(), final ? "\n" : "");
+  } else {
+    std::fprintf(stderr, "%s\n", text.c_str());
+  }
+  std::fflush(stderr);
+}
+
+std::string ProgressReporter::line(bool final) const {
   const size_t done = done_;
   const double elapsed = elapsedSeconds();
   const double rate = elapsed > 0.0 ? double(done) / elapsed : 0.0;
@@ -111,14 +122,10 @@ void ProgressReporter::print(bool final) {
   line += numbers;
   if (!final && total_ > 0 && rate > 0.0 && done < total_) {
     line.append("  left ").append(formatDuration(double(total_ - done) / rate));
+    if (!scope_.empty()) line.append(" of ").append(scope_);
   }
   if (!status_.empty()) line.append("  ").append(status_);
-  if (interactive_) {
-    std::fprintf(stderr, "\r\033[K%s%s", line.c_str(), final ? "\n" : "");
-  } else {
-    std::fprintf(stderr, "%s\n", line.c_str());
-  }
-  std::fflush(stderr);
+  return line;
 }
 
 }  // namespace triwalk

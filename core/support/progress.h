@@ -38,7 +38,12 @@ public:
 
   void advance(size_t count = 1);  // thread-safe
   void setStatus(const std::string& status);
-  void setTotal(size_t total);
+  // scope, if given, says what total counts when it is not the whole
+  // work (a refinement's pass: "pass 3"), and the time left is shown as
+  // of it ("left 0:05 of pass 3"), not as if the work ended there.
+  void setTotal(size_t total, std::string scope = {});
+  // The line print() shows (final: without the time left).
+  std::string line(bool final) const;
   void finish();
   double elapsedSeconds() const;
   size_t done() const { return done_; }
@@ -50,6 +55,7 @@ private:
   std::string label_;
   std::atomic<size_t> done_{0};
   size_t total_ = 0;
+  std::string scope_;
   bool quiet_ = false;
   bool interactive_ = false;
   bool finished_ = false;

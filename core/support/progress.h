@@ -42,7 +42,9 @@ public:
   // work (a refinement's pass: "pass 3"), and the time left is shown as
   // of it ("left 0:05 of pass 3"), not as if the work ended there.
   void setTotal(size_t total, std::string scope = {});
-  // The line print() shows (final: without the time left).
+  // The line print() shows (final: without the time left). Unlike the
+  // setters it takes no lock (print holds it): call it from the thread
+  // that sets the total and status.
   std::string line(bool final) const;
   void finish();
   double elapsedSeconds() const;

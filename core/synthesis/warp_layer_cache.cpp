@@ -17,6 +17,24 @@
 
 namespace triwalk {
 
+namespace {
+
+// The machine's memory (4 GiB where the system does not say).
+size_t physicalMemoryBytes() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && pageSize > 0 ? size_t(pages) * size_t(pageSize) : size_t(4) << 30;
+}
+
+// Hands the pages the C library keeps free back to the kernel, which
+// does not count them available until then.
+void returnFreePagesToKernel() {
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
+}
+
+}  // namespace
+
 CompactLayer::CompactLayer(const WarpLayer& layer)
     : pixelCount_(layer.covered.size()), values_(4 * pixelCount_), reliability_(layer.reliability.size()) {
   std::vector<float> values(values_.size());
@@ -128,11 +146,9 @@ void WarpLayerCache::checkMemory() {
     ++budgetCuts_;
     evictOverBudget();
   }
-#if defined(__GLIBC__)
   // The dropped layers' pages go back to the kernel, not to the C
   // library's free lists, where the other process could not have them.
-  malloc_trim(0);
-#endif
+  returnFreePagesToKernel();
 }
 
 std::optional<size_t> availableMemoryBytes() {
@@ -152,19 +168,15 @@ size_t automaticLayerCacheBytes() {
   // capture: bench, suite) is this process's to reuse, but the C library
   // keeps it, so the kernel does not count it available: handed back
   // first, a later decimation got 14.1 GiB, not 11.1 (docs/BENCHMARKS.md).
-#if defined(__GLIBC__)
-  malloc_trim(0);
-#endif
-  const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGE_SIZE);
-  const size_t physical = pages > 0 && pageSize > 0 ? size_t(pages) * size_t(pageSize) : size_t(4) << 30;
+  returnFreePagesToKernel();
+  const size_t physical = physicalMemoryBytes();
   const size_t available = availableMemoryBytes().value_or(physical / 2);
   return std::max(std::min(available / 4 * 3, physical / 10 * 6), size_t(1) << 30);
 }
 
 void budgetByMachineMemory(WarpLayerCache& cache) {
   cache.setBudgetBytes(automaticLayerCacheBytes());
-  const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGE_SIZE);
-  const size_t physical = pages > 0 && pageSize > 0 ? size_t(pages) * size_t(pageSize) : size_t(4) << 30;
+  const size_t physical = physicalMemoryBytes();
   constexpr size_t kFloor = size_t(256) << 20;
   cache.watchMemory(availableMemoryBytes, std::max(physical / 16, kFloor), kFloor);
 }

@@ -56,6 +56,8 @@ CLI::Validator positiveNumber() {
       "POSITIVE");
 }
 
+CLI::Validator within(OptionRange range) { return CLI::Range(range.lowest, range.highest); }
+
 CLI::Validator errorStride() { return CLI::IsMember({1, 2, 4}); }
 
 CLI::Validator writableFile() {

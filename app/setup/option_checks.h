@@ -2,6 +2,8 @@
 // Checks that run while the command line is parsed, so a bad option fails
 // in one line before any data is loaded or any work starts.
 
+#include "core/support/option_range.h"
+
 #include <CLI/CLI.hpp>
 
 namespace triwalk {
@@ -10,6 +12,8 @@ namespace triwalk {
 // (CLI11's own says "not in range 0 to 1.8e308").
 CLI::Validator nonNegativeNumber();
 CLI::Validator positiveNumber();
+// The values an option shares with a selection file's settings.
+CLI::Validator within(OptionRange range);
 // The lattices --error-stride offers (decimate, suite, view, bench): every
 // pixel, every other row and column, every fourth.
 CLI::Validator errorStride();

@@ -13,9 +13,9 @@ void addStretchOptions(CLI::App& command, QualityArguments& arguments) {
       ->capture_default_str()->group("Warp");
   command.add_option("--grazing-angle", arguments.grazingAngleDegrees,
                      "grazing-angle: drop triangles seen at less than this angle, degrees")
-      ->capture_default_str()->check(CLI::Range(0.0f, 89.0f))->group("Warp");
+      ->capture_default_str()->check(within(kGrazingAngleRange))->group("Warp");
   command.add_option("--depth-ratio", arguments.maxDepthRatio, "depth-ratio: drop triangles with farthest/nearest above this")
-      ->capture_default_str()->check(CLI::Range(1.0f, 1000.0f))->group("Warp");
+      ->capture_default_str()->check(within(kDepthRatioRange))->group("Warp");
 }
 
 void addSourceMeshOptions(CLI::App& command, QualityArguments& arguments) {
@@ -26,7 +26,7 @@ void addSourceMeshOptions(CLI::App& command, QualityArguments& arguments) {
   command.add_option("--mesh-tolerance", arguments.meshTolerancePixels,
                      "simplified: how far the surface may move, in reference pixels (at the distance nearer than which "
                      "5% of the reference's surface lies)")
-      ->capture_default_str()->check(CLI::Range(0.0f, 8.0f))->group("Warp");
+      ->capture_default_str()->check(within(kMeshToleranceRange))->group("Warp");
 }
 
 void addHoleOption(CLI::App& command, QualityArguments& arguments, HoleMode holes, const char* help) {
@@ -37,7 +37,7 @@ void addHoleOption(CLI::App& command, QualityArguments& arguments, HoleMode hole
 
 void addBlendOptions(CLI::App& command, QualityArguments& arguments) {
   command.add_option("--epsilon", arguments.epsilon, "Blend interval, relative to the nearest distance (Eq. 1)")
-      ->capture_default_str()->check(CLI::Range(0.0f, 10.0f))->group("Blend");
+      ->capture_default_str()->check(within(kEpsilonRange))->group("Blend");
   command.add_option("--min-weight-distance", arguments.minimumWeightDistance, "r_min of the weights 1/max(d, r_min), metres")
       ->capture_default_str()->check(positiveNumber())->group("Blend");
   command.add_option("--blend-weights", arguments.blendWeights,

@@ -27,7 +27,7 @@ std::vector<double> selectionSampleWeights(const Dataset& dataset) {
 std::unique_ptr<EdgeCollapseDecimator> datasetDecimator(const Dataset& dataset, std::vector<Triangle> triangles,
                                                         DecimationErrors errors, DecimationOptions options,
                                                         ProgressReporter* costing) {
-  options.sampleWeights = selectionSampleWeights(dataset);
+  if (options.sampleWeights.empty()) options.sampleWeights = selectionSampleWeights(dataset);
   return std::make_unique<EdgeCollapseDecimator>(datasetTriangles(dataset, std::move(triangles)), errors, options, costing);
 }
 
@@ -39,6 +39,7 @@ SelectionRun selectReferences(const Dataset& dataset, DatasetTriangleErrors& err
   const WalkableRegion region = dataset.walkableRegion();
   settings.refinement.region = &region;
   settings.refinement.sampleWeights = selectionSampleWeights(dataset);
+  settings.decimation.sampleWeights = settings.refinement.sampleWeights;
   run.initialSamples = initial.vertexCount();
   if (settings.relativeError > 0.0) {
     run.denseMeanError = meanTriangleError(errors, initial.triangles(), quiet);

@@ -56,9 +56,10 @@ std::vector<double> selectionSampleWeights(const Dataset& dataset);
 
 // A decimator from triangles of the data set's samples, set up as
 // selectReferences sets up its own: the walkable region serves the samples
-// outside every triangle, and the samples weigh their share of it. From the
-// dense triangulation it takes decimate's steps; the viewer's live
-// decimation is built here so that they agree.
+// outside every triangle, and the samples weigh their share of it (unless
+// options already hold those weights: a caller that needs them again
+// computes them once). From the dense triangulation it takes decimate's
+// steps; the viewer's live decimation is built here so that they agree.
 std::unique_ptr<EdgeCollapseDecimator> datasetDecimator(const Dataset& dataset, std::vector<Triangle> triangles,
                                                         DecimationErrors errors, DecimationOptions options,
                                                         ProgressReporter* costing = nullptr);

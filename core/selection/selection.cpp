@@ -38,13 +38,13 @@ auto namedChoice(const JsonObject& settings, const std::string& key, Parse parse
   }
 }
 
-// A number a settings object gives, within the bounds of the command-line
+// A number a settings object gives, within the range of the command-line
 // option that sets it.
-double numberWithin(const JsonObject& settings, const std::string& key, double lowest, double highest) {
+double numberWithin(const JsonObject& settings, const std::string& key, OptionRange range) {
   const double value = settings.number(key);
-  if (!(value >= lowest && value <= highest)) {
+  if (!range.contains(value)) {
     std::ostringstream problem;
-    problem << key << " must be from " << lowest << " to " << highest << ", not " << value;
+    problem << key << " must be from " << range.lowest << " to " << range.highest << ", not " << value;
     settings.fail(problem.str());
   }
   return value;
@@ -75,7 +75,7 @@ DecimationOptions readDecimationOptions(const JsonObject& settings) {
   return options;
 }
 
-// The bounds are those of the command-line options (app/setup/quality_options.cpp).
+// The ranges are the command-line options' (core/support/option_range.h).
 std::optional<TriangleErrorSettings> readSelectionErrors(const JsonObject& settings, const Dataset& dataset) {
   const nlohmann::json keys = describeSelectionErrors(TriangleErrorSettings{});
   if (std::none_of(keys.items().begin(), keys.items().end(), [&](const auto& key) { return settings.has(key.key()); })) {
@@ -96,12 +96,12 @@ std::optional<TriangleErrorSettings> readSelectionErrors(const JsonObject& setti
   WarpOptions& warp = errors.synthesis.warp;
   if (settings.has("point_warp")) warp.method = settings.boolean("point_warp") ? WarpMethod::Point : WarpMethod::Mesh;
   if (settings.has("stretch_test")) warp.stretchTest = namedChoice(settings, "stretch_test", parseStretchTest);
-  if (settings.has("grazing_angle")) warp.grazingAngleDegrees = float(numberWithin(settings, "grazing_angle", 0.0, 89.0));
-  if (settings.has("depth_ratio")) warp.maxDepthRatio = float(numberWithin(settings, "depth_ratio", 1.0, 1000.0));
+  if (settings.has("grazing_angle")) warp.grazingAngleDegrees = float(numberWithin(settings, "grazing_angle", kGrazingAngleRange));
+  if (settings.has("depth_ratio")) warp.maxDepthRatio = float(numberWithin(settings, "depth_ratio", kDepthRatioRange));
   if (settings.has("source_mesh")) warp.mesh = namedChoice(settings, "source_mesh", parseSourceMesh);
-  if (settings.has("mesh_tolerance")) warp.meshTolerancePixels = float(numberWithin(settings, "mesh_tolerance", 0.0, 8.0));
+  if (settings.has("mesh_tolerance")) warp.meshTolerancePixels = float(numberWithin(settings, "mesh_tolerance", kMeshToleranceRange));
   BlendOptions& blend = errors.synthesis.blend;
-  if (settings.has("epsilon")) blend.epsilon = float(numberWithin(settings, "epsilon", 0.0, 10.0));
+  if (settings.has("epsilon")) blend.epsilon = float(numberWithin(settings, "epsilon", kEpsilonRange));
   if (settings.has("min_weight_distance")) {
     blend.minimumWeightDistance = float(settings.number("min_weight_distance"));
     if (!(blend.minimumWeightDistance > 0.0f)) settings.fail("min_weight_distance must be positive");

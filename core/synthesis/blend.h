@@ -38,6 +38,8 @@ struct BlendOptions {
   bool operator==(const BlendOptions&) const = default;
 };
 
+inline constexpr OptionRange kEpsilonRange{0.0f, 10.0f};
+
 struct BlendedView {
   ColorImage color;                  // linear; black in holes
   ScalarImage distance;              // z_front, metres; +inf for sky and holes

@@ -28,6 +28,7 @@
 
 #include "core/geometry/projection.h"
 #include "core/image/image.h"
+#include "core/support/option_range.h"
 
 #include <cstdint>
 #include <optional>
@@ -62,6 +63,10 @@ struct WarpOptions {
   // distance nearer than which 5% of the surface lies.
   float meshTolerancePixels = 0.25f;
 };
+
+inline constexpr OptionRange kGrazingAngleRange{0.0f, 89.0f};    // degrees
+inline constexpr OptionRange kDepthRatioRange{1.0f, 1000.0f};
+inline constexpr OptionRange kMeshToleranceRange{0.0f, 8.0f};   // source pixels
 
 // Parses "none", "grazing-angle", "depth-ratio"; throws InputError.
 StretchTest parseStretchTest(const std::string& name);

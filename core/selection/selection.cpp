@@ -75,7 +75,8 @@ DecimationOptions readDecimationOptions(const JsonObject& settings) {
   return options;
 }
 
-// The ranges are the command-line options' (core/support/option_range.h).
+// The ranges are the command-line options' (kGrazingAngleRange and the
+// others, beside WarpOptions and BlendOptions).
 std::optional<TriangleErrorSettings> readSelectionErrors(const JsonObject& settings, const Dataset& dataset) {
   const nlohmann::json keys = describeSelectionErrors(TriangleErrorSettings{});
   if (std::none_of(keys.items().begin(), keys.items().end(), [&](const auto& key) { return settings.has(key.key()); })) {
@@ -96,10 +97,14 @@ std::optional<TriangleErrorSettings> readSelectionErrors(const JsonObject& setti
   WarpOptions& warp = errors.synthesis.warp;
   if (settings.has("point_warp")) warp.method = settings.boolean("point_warp") ? WarpMethod::Point : WarpMethod::Mesh;
   if (settings.has("stretch_test")) warp.stretchTest = namedChoice(settings, "stretch_test", parseStretchTest);
-  if (settings.has("grazing_angle")) warp.grazingAngleDegrees = float(numberWithin(settings, "grazing_angle", kGrazingAngleRange));
+  if (settings.has("grazing_angle")) {
+    warp.grazingAngleDegrees = float(numberWithin(settings, "grazing_angle", kGrazingAngleRange));
+  }
   if (settings.has("depth_ratio")) warp.maxDepthRatio = float(numberWithin(settings, "depth_ratio", kDepthRatioRange));
   if (settings.has("source_mesh")) warp.mesh = namedChoice(settings, "source_mesh", parseSourceMesh);
-  if (settings.has("mesh_tolerance")) warp.meshTolerancePixels = float(numberWithin(settings, "mesh_tolerance", kMeshToleranceRange));
+  if (settings.has("mesh_tolerance")) {
+    warp.meshTolerancePixels = float(numberWithin(settings, "mesh_tolerance", kMeshToleranceRange));
+  }
   BlendOptions& blend = errors.synthesis.blend;
   if (settings.has("epsilon")) blend.epsilon = float(numberWithin(settings, "epsilon", kEpsilonRange));
   if (settings.has("min_weight_distance")) {

@@ -7,6 +7,7 @@
 // alone are asked for. Pixels no layer covers are holes. Sky (+inf) blends
 // with sky.
 
+#include "core/support/option_range.h"
 #include "core/synthesis/warp.h"
 
 #include <tbb/blocked_range.h>

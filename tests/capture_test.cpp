@@ -3,6 +3,7 @@
 
 #include "core/geometry/projection.h"
 #include "core/io/dataset.h"
+#include "core/io/simplified_mesh_store.h"
 #include "render/capture/dataset_capture.h"
 #include "render/capture/panorama_capturer.h"
 #include "render/gl/gl_context.h"
@@ -231,6 +232,15 @@ TEST_CASE("capture writes a complete data set that opens, and refuses to overwri
     CHECK(p.y <= 2.5f);
   }
   CHECK(!std::filesystem::exists(directory / "box.partial-triwalk"));
+  // What a decimation reads, kept as each view was written: at 64x32 the
+  // error width is the data set's, so the samples' simplified meshes and no
+  // downsampled copies (core/selection/selection_inputs.h).
+  const SimplifiedMeshStore meshes(dataset);
+  for (int i = 0; i < dataset.sampleCount(); ++i) {
+    CHECK(std::filesystem::is_regular_file(meshes.file(dataset.sample(i), 64, WarpOptions{}.meshTolerancePixels)));
+  }
+  CHECK_FALSE(std::filesystem::exists(meshes.file(dataset.probe(0), 64, WarpOptions{}.meshTolerancePixels)));
+  CHECK_FALSE(std::filesystem::exists(directory / "box" / "downsampled"));
 
   std::filesystem::create_directories(directory / "other");
   std::ofstream(directory / "other/notes.txt") << "keep me";

@@ -5,6 +5,7 @@
 #include "core/io/atomic_file.h"
 #include "core/io/dataset.h"
 #include "core/selection/selection.h"
+#include "core/selection/selection_inputs.h"
 #include "tests/analytic_scene.h"
 #include "tests/test_support.h"
 
@@ -99,6 +100,32 @@ TEST_CASE("decimate on a data set narrower than the default error width computes
   REQUIRE(result.status == 0);
   CHECK(result.out.find("errors at 128x64") != std::string::npos);
   CHECK(std::filesystem::exists(directory / "selection.json"));
+}
+
+TEST_CASE("decimate at its defaults reads every view capture kept, and makes what is missing for the next run") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 3, 3, 512, 0);
+  const Dataset dataset = Dataset::open(directory / "data");
+  // What capture keeps as it writes each view.
+  SelectionInputKeeper keeper(directory / "data", glm::ivec2(512, 256));
+  for (int i = 0; i < dataset.sampleCount(); ++i) keeper.keep(dataset.sample(i), true, dataset.loadView(dataset.sample(i)));
+  const std::string decimate = "decimate --quiet --target 5 --refine-radius 0 --dataset " + (directory / "data").string() +
+                               " --out " + (directory / "selection.json").string();
+  const RunResult kept = runTriwalk(directory, decimate);
+  INFO("stderr: " << kept.err);
+  REQUIRE(kept.status == 0);
+  CHECK(kept.out.find("views at 256x128: 9 read from the data set's store, 0 downsampled from their EXR files; "
+                      "simplified meshes: 9 read, 0 simplified") != std::string::npos);
+
+  std::filesystem::remove_all(directory / "data" / "downsampled");
+  std::filesystem::remove_all(directory / "data" / "meshes");
+  const RunResult made = runTriwalk(directory, decimate);
+  REQUIRE(made.status == 0);
+  CHECK(made.out.find("0 read from the data set's store, 9 downsampled from their EXR files; simplified meshes: 0 "
+                      "read, 9 simplified") != std::string::npos);
+  const RunResult again = runTriwalk(directory, decimate);
+  REQUIRE(again.status == 0);
+  CHECK(again.out.find("9 read from the data set's store, 0 downsampled") != std::string::npos);
 }
 
 TEST_CASE("SIGTERM stops decimate and eval cleanly, with no partial output") {

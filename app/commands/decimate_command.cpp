@@ -93,6 +93,11 @@ void registerDecimateCommand(CLI::App& app) {
     }
     std::printf("warped layers computed %llu, reused %llu\n", (unsigned long long)errors.layerCache().misses(),
                 (unsigned long long)errors.layerCache().hits());
+    const ViewLoads& loads = errors.loads();
+    std::printf("views at %dx%d: %d read from the data set's store, %d downsampled from their EXR files; simplified "
+                "meshes: %d read, %d simplified\n",
+                settings.width, settings.width / 2, loads.panoramasRead, loads.panoramasDownsampled, loads.meshesRead,
+                loads.meshesSimplified);
     std::printf("wrote %s\n", a.out.c_str());
   });
 }

@@ -7,6 +7,7 @@
 #include "core/io/png_io.h"
 #include "core/io/staged_directory.h"
 #include "core/selection/baselines.h"
+#include "core/selection/selection_inputs.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 
@@ -161,6 +162,7 @@ ImportReport importCapture(const std::vector<SourceView>& views, const ImportOpt
   report.height = size.y;
   InterruptScope interruptScope;
   ProgressReporter progress("import", views.size(), options.quiet);
+  SelectionInputKeeper selectionInputs(staging.path(), size);
   size_t sampleIndex = 0, probeIndex = 0;
   for (size_t i = 0; i < views.size(); ++i) {
     throwIfInterrupted();
@@ -168,6 +170,7 @@ ImportReport importCapture(const std::vector<SourceView>& views, const ImportOpt
     ViewRecord& record = isProbe[i] ? manifest.probes[probeIndex++] : manifest.samples[sampleIndex++];
     record.yawDegrees = converted.yawDegrees;
     writePanoramaExr(staging.path() / record.file, converted.panorama);
+    selectionInputs.keep(record, !isProbe[i], converted.panorama);
     const size_t pixels = converted.panorama.distance.pixelCount();
     report.invalidDepthPixels += converted.invalidPixels;
     report.pixels += pixels;

@@ -150,13 +150,15 @@ int Dataset::downsamplingFactor(int width, const std::string& option) const {
   return manifest_.width / width;
 }
 
-int Dataset::largestWidthAtMost(int limit) const {
-  for (int factor = 1; factor <= manifest_.height; ++factor) {
-    if (manifest_.width % factor == 0 && manifest_.height % factor == 0 && manifest_.width / factor <= limit) {
-      return manifest_.width / factor;
-    }
+int largestWidthAtMost(glm::ivec2 fullSize, int limit) {
+  for (int factor = 1; factor <= fullSize.y; ++factor) {
+    if (fullSize.x % factor == 0 && fullSize.y % factor == 0 && fullSize.x / factor <= limit) return fullSize.x / factor;
   }
-  return manifest_.width / manifest_.height;
+  return fullSize.x / fullSize.y;
+}
+
+int Dataset::largestWidthAtMost(int limit) const {
+  return triwalk::largestWidthAtMost(glm::ivec2(manifest_.width, manifest_.height), limit);
 }
 
 Panorama Dataset::loadView(const ViewRecord& view, int width) const {

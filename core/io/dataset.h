@@ -92,6 +92,11 @@ private:
   Manifest manifest_;
 };
 
+// The largest width not above `limit` that divides panoramas of fullSize
+// (and their height) by a whole number: Dataset::largestWidthAtMost for a
+// data set still being written.
+int largestWidthAtMost(glm::ivec2 fullSize, int limit);
+
 // The file of sample or probe id in a data set triwalk writes
 // ("samples/s0007.exr", "probes/p0003.exr").
 std::string sampleFileName(int id);

@@ -228,6 +228,14 @@ void writeDepthExr(const std::filesystem::path& path, const ScalarImage& depth) 
   });
 }
 
+Panorama asWrittenToExr(const Panorama& panorama) {
+  Panorama written = panorama;
+  for (glm::vec3& color : written.color.pixels) {
+    for (int c = 0; c < 3; ++c) color[c] = float(half(color[c]));  // writePanoramaExr's conversion, then the reader's
+  }
+  return written;
+}
+
 void writePanoramaExr(const std::filesystem::path& path, const Panorama& panorama) {
   const int width = panorama.width();
   const int height = panorama.height();

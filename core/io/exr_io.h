@@ -26,6 +26,11 @@ Panorama readPanoramaExr(const std::filesystem::path& path, std::optional<glm::i
 // Writes atomically (temporary file + rename).
 void writePanoramaExr(const std::filesystem::path& path, const Panorama& panorama);
 
+// The panorama readPanoramaExr returns from the file writePanoramaExr
+// writes of this one, without the file: the colours rounded to half floats
+// as the file stores them (the distances are stored as they are).
+Panorama asWrittenToExr(const Panorama& panorama);
+
 // A single-channel float depth map (the depth EXRs of RGB-D captures): the
 // file's only channel, else the first of Z, Y, R, depth. NaN or negative
 // values are refused; 0 and +inf come back as they are (the importer

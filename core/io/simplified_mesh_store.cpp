@@ -1,14 +1,11 @@
 #include "core/io/simplified_mesh_store.h"
 
 #include "core/geometry/projection.h"
-#include "core/io/atomic_file.h"
-#include "core/support/errors.h"
+#include "core/support/stable_hash.h"
 
 #include <array>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <iostream>
 #include <span>
 
 namespace triwalk {
@@ -26,48 +23,35 @@ struct Header {
   uint32_t surfaceIndices, skyIndices;
 };
 
-// FNV-1a: a stable 64-bit hash, the same on every run and machine.
-class Fnv1a {
-public:
-  void add(std::span<const std::byte> bytes) {
-    for (const std::byte b : bytes) hash_ = (hash_ ^ uint64_t(b)) * 0x100000001b3ull;
-  }
-  template <typename T>
-  void add(const T& value) {
-    add(std::as_bytes(std::span<const T>(&value, 1)));
-  }
-  uint64_t value() const { return hash_; }
-
-private:
-  uint64_t hash_ = 0xcbf29ce484222325ull;
-};
-
 // Everything the simplified triangles depend on.
 uint64_t sourceKey(const ViewRecord& view, const Panorama& panorama, const WarpOptions& options) {
-  Fnv1a hash;
-  hash.add(kMagic);
-  hash.add(panorama.width());
-  hash.add(panorama.height());
-  hash.add(std::as_bytes(std::span<const float>(panorama.distance.pixels)));
-  hash.add(view.position);
-  hash.add(view.yawDegrees);
-  hash.add(options.stretchTest);
-  hash.add(options.grazingAngleDegrees);
-  hash.add(options.maxDepthRatio);
-  hash.add(options.meshTolerancePixels);
+  StableHash hash;
+  hash.addValue(kMagic);
+  hash.addValue(panorama.width());
+  hash.addValue(panorama.height());
+  hash.addBytes(std::as_bytes(std::span<const float>(panorama.distance.pixels)));
+  hash.addValue(view.position);
+  hash.addValue(view.yawDegrees);
+  hash.addValue(options.stretchTest);
+  hash.addValue(options.grazingAngleDegrees);
+  hash.addValue(options.maxDepthRatio);
+  hash.addValue(options.meshTolerancePixels);
   return hash.value();
 }
 
 uint64_t indicesChecksum(const SimplifiedTriangles& triangles) {
-  Fnv1a hash;
-  hash.add(std::as_bytes(std::span<const uint32_t>(triangles.surface)));
-  hash.add(std::as_bytes(std::span<const uint32_t>(triangles.sky)));
+  StableHash hash;
+  hash.addBytes(std::as_bytes(std::span<const uint32_t>(triangles.surface)));
+  hash.addBytes(std::as_bytes(std::span<const uint32_t>(triangles.sky)));
   return hash.value();
 }
 
 }  // namespace
 
-SimplifiedMeshStore::SimplifiedMeshStore(const Dataset& dataset) : directory_(dataset.directory() / "meshes") {}
+SimplifiedMeshStore::SimplifiedMeshStore(const std::filesystem::path& datasetDirectory)
+    : files_(datasetDirectory / "meshes", "simplified meshes") {}
+
+SimplifiedMeshStore::SimplifiedMeshStore(const Dataset& dataset) : SimplifiedMeshStore(dataset.directory()) {}
 
 std::filesystem::path SimplifiedMeshStore::file(const ViewRecord& view, int width, float tolerancePixels) const {
   // view.file is a path inside the data set (checked when it was opened).
@@ -78,7 +62,7 @@ std::filesystem::path SimplifiedMeshStore::file(const ViewRecord& view, int widt
     std::snprintf(text, sizeof text, ".%.2fpx", double(tolerancePixels));
     tolerance = text;
   }
-  return directory_ / (view.file + "." + std::to_string(width) + tolerance + ".mesh");
+  return files_.folder() / (view.file + "." + std::to_string(width) + tolerance + ".mesh");
 }
 
 WarpSource SimplifiedMeshStore::source(const ViewRecord& view, const Panorama& panorama, const WarpOptions& options) {
@@ -101,14 +85,9 @@ WarpSource SimplifiedMeshStore::source(const ViewRecord& view, const Panorama& p
 
 std::optional<SimplifiedTriangles> SimplifiedMeshStore::load(const std::filesystem::path& path, uint64_t key,
                                                               uint32_t vertexCount) const {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) return std::nullopt;
-  std::string bytes;
-  try {
-    bytes = readTextFile(path);
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
+  const std::optional<std::string> file = files_.read(path);
+  if (!file) return std::nullopt;
+  const std::string& bytes = *file;
   Header header{};
   if (bytes.size() < sizeof(Header)) return std::nullopt;
   std::memcpy(&header, bytes.data(), sizeof(Header));
@@ -137,29 +116,10 @@ std::optional<SimplifiedTriangles> SimplifiedMeshStore::load(const std::filesyst
 }
 
 void SimplifiedMeshStore::store(const std::filesystem::path& path, uint64_t key, const SimplifiedTriangles& triangles) {
-  try {
-    {
-      std::lock_guard lock(directories_);
-      std::filesystem::create_directories(path.parent_path());
-    }
-    Header header{kMagic, key, indicesChecksum(triangles), uint32_t(triangles.surface.size()),
-                  uint32_t(triangles.sky.size())};
-    writeFileAtomically(path, [&](const std::filesystem::path& temporary) {
-      std::ofstream stream(temporary, std::ios::binary);
-      stream.write(reinterpret_cast<const char*>(&header), sizeof(header));
-      for (const std::vector<uint32_t>* list : {&triangles.surface, &triangles.sky}) {
-        if (list->empty()) continue;  // data() may be null
-        stream.write(reinterpret_cast<const char*>(list->data()), std::streamsize(list->size() * sizeof(uint32_t)));
-      }
-      stream.close();
-      if (!stream) throw InputError(path.string(), "cannot write file");
-    });
-  } catch (const std::exception& failure) {
-    if (!warned_.exchange(true)) {
-      std::cerr << "triwalk: simplified meshes are not kept (" << failure.what()
-                << "); they will be simplified again next time\n";
-    }
-  }
+  const Header header{kMagic, key, indicesChecksum(triangles), uint32_t(triangles.surface.size()),
+                      uint32_t(triangles.sky.size())};
+  files_.write(path, {std::as_bytes(std::span(&header, 1)), std::as_bytes(std::span(triangles.surface)),
+                      std::as_bytes(std::span(triangles.sky))});
 }
 
 }  // namespace triwalk

@@ -8,15 +8,14 @@
 // and kept in DATASET/meshes/, one file per view, width and tolerance, under a key
 // of all of these. A file whose key or checksum does not match, or that is
 // malformed, is simplified again and replaced: it is a cache, never input
-// the user must mend. A data set that cannot be written (read-only, full)
-// only costs the time, and says so once on stderr.
+// the user must mend (core/io/derived_files.h).
 
 #include "core/io/dataset.h"
+#include "core/io/derived_files.h"
 #include "core/synthesis/warp.h"
 
 #include <atomic>
 #include <filesystem>
-#include <mutex>
 #include <optional>
 
 namespace triwalk {
@@ -24,6 +23,9 @@ namespace triwalk {
 class SimplifiedMeshStore {
 public:
   explicit SimplifiedMeshStore(const Dataset& dataset);
+  // The store of the data set being written into datasetDirectory (capture,
+  // import), before its manifest exists.
+  explicit SimplifiedMeshStore(const std::filesystem::path& datasetDirectory);
 
   // The warp source of view (its panorama loaded at any width). With a
   // simplified mesh, its triangles come from the store when it holds them
@@ -43,10 +45,8 @@ private:
   std::optional<SimplifiedTriangles> load(const std::filesystem::path& path, uint64_t key, uint32_t vertexCount) const;
   void store(const std::filesystem::path& path, uint64_t key, const SimplifiedTriangles& triangles);
 
-  std::filesystem::path directory_;
+  DerivedFiles files_;
   std::atomic<int> loaded_ = 0, simplified_ = 0;
-  std::atomic<bool> warned_ = false;
-  std::mutex directories_;  // sources are made on several threads at once
 };
 
 }  // namespace triwalk

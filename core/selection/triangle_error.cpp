@@ -1,6 +1,7 @@
 #include "core/selection/triangle_error.h"
 
 #include "core/image/color.h"
+#include "core/io/downsampled_panorama_store.h"
 #include "core/io/simplified_mesh_store.h"
 #include "core/synthesis/blended_row_error.h"
 #include "core/support/errors.h"
@@ -53,11 +54,12 @@ DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const Trian
   ProgressReporter progress("load " + std::to_string(settings.width) + "x" + std::to_string(settings.width / 2),
                             size_t(samples + probes), quiet);
   SimplifiedMeshStore meshStore(dataset);
+  DownsampledPanoramaStore panoramaStore(dataset);
   tbb::parallel_for(0, samples + probes, [&](int i) {
     if (interruptRequested()) return;
     const bool isSample = i < samples;
     const ViewRecord& view = isSample ? dataset.sample(i) : dataset.probe(i - samples);
-    const Panorama panorama = dataset.loadView(view, settings.width);
+    const Panorama panorama = panoramaStore.load(view, settings.width);
     if (isSample) {
       sources_[size_t(i)] = std::make_unique<WarpSource>(meshStore.source(view, panorama, settings.synthesis.warp));
       sampleDisplay_[size_t(i)] = toDisplayColors(panorama.color);
@@ -68,6 +70,7 @@ DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const Trian
   });
   progress.finish();
   throwIfInterrupted();
+  loads_ = {panoramaStore.loaded(), panoramaStore.downsampled(), meshStore.loaded(), meshStore.simplified()};
   if (!settings.layerCacheBytes) budgetByMachineMemory(layerCache_);
 }
 

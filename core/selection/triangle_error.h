@@ -138,6 +138,15 @@ void checkErrorStride(const TriangleErrorSettings& settings, const std::string& 
 // evaluation), and on the main job they are a third of the views to load.
 enum class LoadedViews { Samples, SamplesAndProbes };
 
+// Where DatasetTriangleErrors found its views: copies at the error width
+// read from the data set's store or made from the EXR files, simplified
+// meshes read or simplified (core/io/downsampled_panorama_store.h,
+// core/io/simplified_mesh_store.h).
+struct ViewLoads {
+  int panoramasRead = 0, panoramasDownsampled = 0;
+  int meshesRead = 0, meshesSimplified = 0;
+};
+
 class DatasetTriangleErrors final : public TriangleErrorSource, public ReconstructionErrorSource {
 public:
   // Loads every sample (and, if asked, every probe) at the settings' width,
@@ -165,6 +174,7 @@ public:
   const WarpSource& source(int sample) const { return *sources_[size_t(sample)]; }
   uint64_t evaluations() const { return evaluations_; }
   const WarpLayerCache& layerCache() const { return layerCache_; }
+  const ViewLoads& loads() const { return loads_; }
 
 private:
   // E of a triangle reconstructing a destination sample, from cached layers.
@@ -178,6 +188,7 @@ private:
   std::vector<glm::dvec2> positions_;
   std::atomic<uint64_t> evaluations_{0};
   WarpLayerCache layerCache_;
+  ViewLoads loads_;
 };
 
 }  // namespace triwalk

@@ -2,6 +2,7 @@
 
 #include "core/io/exr_io.h"
 #include "core/io/staged_directory.h"
+#include "core/selection/selection_inputs.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 #include "render/capture/panorama_capturer.h"
@@ -161,10 +162,14 @@ CaptureSummary captureDataset(const Scene& sceneWithDoors, const std::string& sc
     for (const ViewRecord& view : plan.probes) views.push_back(&view);
 
     ProgressReporter progress("capture", views.size(), options.quiet);
-    // The OpenEXR write of one view overlaps the rendering of the next.
+    SelectionInputKeeper selectionInputs(staging.path(), glm::ivec2(options.width, options.width / 2));
+    // The OpenEXR write of one view (and keeping what a decimation reads
+    // of it) overlaps the rendering of the next.
     std::future<void> pendingWrite;
     int closeWarnings = 0;
-    for (const ViewRecord* view : views) {
+    for (size_t index = 0; index < views.size(); ++index) {
+      const ViewRecord* view = views[index];
+      const bool isSample = index < plan.samples.size();
       throwIfInterrupted();
       Panorama panorama = capturer.capture(view->position);
       size_t tooClose = 0;
@@ -175,8 +180,10 @@ CaptureSummary captureDataset(const Scene& sceneWithDoors, const std::string& sc
                      view->file.c_str(), view->position.x, view->position.y, view->position.z, tooClose);
       }
       if (pendingWrite.valid()) pendingWrite.get();
-      pendingWrite = std::async(std::launch::async, [path = staging.path() / view->file, panorama = std::move(panorama)] {
+      pendingWrite = std::async(std::launch::async, [&selectionInputs, path = staging.path() / view->file, view, isSample,
+                                                     panorama = std::move(panorama)] {
         writePanoramaExr(path, panorama);
+        selectionInputs.keep(*view, isSample, panorama);
       });
       progress.advance();
     }

@@ -24,7 +24,8 @@ void benchCapture(BenchTable& table, const Scene& scene, int width, int count) {
   const std::string sceneSize = "builtin scene, " + std::to_string(scene.triangleCount()) + " triangles";
   const std::string panoramaSize = std::to_string(width) + "x" + std::to_string(width / 2);
 
-  // End to end, as `triwalk capture` runs: render, read back, write EXR.
+  // End to end, as `triwalk capture` runs: render, read back, write EXR,
+  // keep what a decimation reads (core/selection/selection_inputs.h).
   CaptureOptions options;
   options.width = width;
   options.probes = 0;
@@ -32,7 +33,7 @@ void benchCapture(BenchTable& table, const Scene& scene, int width, int count) {
   options.perPath = 4;
   options.quiet = true;
   const CaptureSummary summary = TemporaryCapture(scene, options, "triwalk-bench-capture").summary();
-  table.add({"capture throughput (render + read-back + OpenEXR write)",
+  table.add({"capture throughput (render + read-back + OpenEXR write + the error-width copy and mesh)",
              panoramaSize + ", " + sceneSize + ", " + std::to_string(summary.samples) + " views",
              formatNumber(summary.samples / summary.seconds, 2) + " panoramas/s",
              "end to end; the write of one view overlaps the render of the next"});

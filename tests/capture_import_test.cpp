@@ -7,8 +7,10 @@
 #include "core/import/dataset_import.h"
 #include "core/import/panorama_orientation.h"
 #include "core/io/dataset.h"
+#include "core/io/downsampled_panorama_store.h"
 #include "core/io/exr_io.h"
 #include "core/io/png_io.h"
+#include "core/io/simplified_mesh_store.h"
 #include "tests/analytic_scene.h"
 #include "tests/test_support.h"
 
@@ -167,6 +169,29 @@ TEST_CASE("export to each layout and import back: the same positions, yaws and i
       CHECK(infinityKept);
     }
   }
+}
+
+TEST_CASE("an import keeps what a decimation reads of each view, bit for bit what the written files give") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 2, 3, 512, 0);
+  const Dataset original = Dataset::open(directory / "data");
+  REQUIRE(exportDataset(original, CaptureLayout::Folder, directory / "exported", true) == 6);
+  ImportOptions options;
+  options.probesFraction = 0.0;
+  importQuietly(scan(CaptureLayout::Folder, directory / "exported"), directory / "imported", options);
+  const Dataset back = Dataset::open(directory / "imported");
+  REQUIRE(back.sampleCount() == 6);
+  DownsampledPanoramaStore kept(back);
+  const SimplifiedMeshStore meshes(back);
+  for (int i = 0; i < back.sampleCount(); ++i) {
+    const Panorama copy = kept.load(back.sample(i), 256);
+    const Panorama fromFile = back.loadView(back.sample(i), 256);
+    CHECK(copy.color.pixels == fromFile.color.pixels);
+    CHECK(copy.distance.pixels == fromFile.distance.pixels);
+    CHECK(std::filesystem::is_regular_file(meshes.file(back.sample(i), 256, WarpOptions{}.meshTolerancePixels)));
+  }
+  CHECK(kept.loaded() == 6);
+  CHECK(kept.downsampled() == 0);
 }
 
 TEST_CASE("a tilted camera's panorama is resampled upright: it matches the upright view of the same place") {

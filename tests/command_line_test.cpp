@@ -99,6 +99,8 @@ TEST_CASE("decimate on a data set narrower than the default error width computes
   INFO("stderr: " << result.err);
   REQUIRE(result.status == 0);
   CHECK(result.out.find("errors at 128x64") != std::string::npos);
+  CHECK(result.out.find("views at 128x64: read from their EXR files (the data set's width); simplified meshes: 0 read, "
+                        "9 simplified") != std::string::npos);
   CHECK(std::filesystem::exists(directory / "selection.json"));
 }
 

@@ -94,10 +94,13 @@ void registerDecimateCommand(CLI::App& app) {
     std::printf("warped layers computed %llu, reused %llu\n", (unsigned long long)errors.layerCache().misses(),
                 (unsigned long long)errors.layerCache().hits());
     const ViewLoads& loads = errors.loads();
-    std::printf("views at %dx%d: %d read from the data set's store, %d downsampled from their EXR files; simplified "
-                "meshes: %d read, %d simplified\n",
-                settings.width, settings.width / 2, loads.panoramasRead, loads.panoramasDownsampled, loads.meshesRead,
-                loads.meshesSimplified);
+    if (loads.panoramasRead + loads.panoramasDownsampled == 0) {
+      std::printf("views at %dx%d: read from their EXR files (the data set's width)", settings.width, settings.width / 2);
+    } else {
+      std::printf("views at %dx%d: %d read from the data set's store, %d downsampled from their EXR files",
+                  settings.width, settings.width / 2, loads.panoramasRead, loads.panoramasDownsampled);
+    }
+    std::printf("; simplified meshes: %d read, %d simplified\n", loads.meshesRead, loads.meshesSimplified);
     std::printf("wrote %s\n", a.out.c_str());
   });
 }

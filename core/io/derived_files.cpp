@@ -3,6 +3,7 @@
 #include "core/io/atomic_file.h"
 #include "core/support/errors.h"
 
+#include <cstring>
 #include <fstream>
 #include <iostream>
 
@@ -11,17 +12,24 @@ namespace triwalk {
 DerivedFiles::DerivedFiles(std::filesystem::path folder, std::string kind)
     : folder_(std::move(folder)), kind_(std::move(kind)) {}
 
-std::optional<std::string> DerivedFiles::read(const std::filesystem::path& path) const {
+std::optional<DerivedFile> DerivedFiles::read(const std::filesystem::path& path, const std::array<char, 8>& magic,
+                                              uint64_t key) const {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) return std::nullopt;
+  DerivedFile file{};
   try {
-    return readTextFile(path);
+    file.bytes = readTextFile(path);
   } catch (const std::exception&) {
     return std::nullopt;
   }
+  if (file.bytes.size() < sizeof(DerivedFileHeader)) return std::nullopt;
+  std::memcpy(&file.header, file.bytes.data(), sizeof(DerivedFileHeader));
+  if (file.header.magic != magic || file.header.key != key) return std::nullopt;
+  return file;
 }
 
-void DerivedFiles::write(const std::filesystem::path& path, std::initializer_list<std::span<const std::byte>> parts) {
+void DerivedFiles::write(const std::filesystem::path& path, const DerivedFileHeader& header,
+                         std::initializer_list<std::span<const std::byte>> parts) {
   try {
     {
       std::lock_guard lock(directories_);
@@ -29,6 +37,7 @@ void DerivedFiles::write(const std::filesystem::path& path, std::initializer_lis
     }
     writeFileAtomically(path, [&](const std::filesystem::path& temporary) {
       std::ofstream stream(temporary, std::ios::binary);
+      stream.write(reinterpret_cast<const char*>(&header), sizeof(header));
       for (const std::span<const std::byte> part : parts) {
         if (part.empty()) continue;  // data() may be null
         stream.write(reinterpret_cast<const char*>(part.data()), std::streamsize(part.size()));

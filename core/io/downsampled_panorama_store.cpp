@@ -5,8 +5,8 @@
 #include "core/support/errors.h"
 #include "core/support/stable_hash.h"
 
+#include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <span>
@@ -16,17 +16,9 @@ namespace triwalk {
 
 namespace {
 
-// A file: magic, the key, the checksum of the pixels, the size, then the
-// colour (three floats a pixel) and the distance (one), row by row (host
-// byte order; a file from a machine of the other order fails its checksum
-// and is made again).
+// A file: the header (sizes: width and height), then the colour (three
+// floats a pixel) and the distance (one), row by row.
 constexpr std::array<char, 8> kMagic = {'T', 'W', 'P', 'A', 'N', 'O', '0', '1'};
-struct Header {
-  std::array<char, 8> magic;
-  uint64_t key;
-  uint64_t checksum;
-  uint32_t width, height;
-};
 static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "colours are written as three packed floats");
 
 uint64_t pixelsChecksum(const Panorama& panorama) {
@@ -36,15 +28,9 @@ uint64_t pixelsChecksum(const Panorama& panorama) {
   return hash.value();
 }
 
-// The values readPanoramaExr accepts.
 bool holdsPanoramaValues(const Panorama& panorama) {
-  for (const glm::vec3& color : panorama.color.pixels) {
-    if (!std::isfinite(color.r) || !std::isfinite(color.g) || !std::isfinite(color.b)) return false;
-  }
-  for (const float d : panorama.distance.pixels) {
-    if (std::isnan(d) || d < 0.0f) return false;
-  }
-  return true;
+  return std::all_of(panorama.color.pixels.begin(), panorama.color.pixels.end(), acceptedPanoramaColor) &&
+         std::all_of(panorama.distance.pixels.begin(), panorama.distance.pixels.end(), acceptedPanoramaDistance);
 }
 
 }  // namespace
@@ -103,36 +89,32 @@ Panorama DownsampledPanoramaStore::load(const ViewRecord& view, int width) {
 
 Panorama DownsampledPanoramaStore::keep(const ViewRecord& view, const Panorama& full, int width) {
   const int factor = factorOf(width);
+  if (factor == 1) return asWrittenToExr(full);
   Panorama copy = downsamplePanorama(asWrittenToExr(full), factor);
-  if (factor == 1) return copy;
   ++downsampled_;
   if (const std::optional<uint64_t> key = keyOf(view, width)) store(file(view, width), *key, copy);
   return copy;
 }
 
 std::optional<Panorama> DownsampledPanoramaStore::read(const std::filesystem::path& path, uint64_t key, int width) const {
-  const std::optional<std::string> bytes = files_.read(path);
-  if (!bytes) return std::nullopt;
+  const std::optional<DerivedFile> file = files_.read(path, kMagic, key);
   const int height = fullSize_.y / factorOf(width);
   const size_t pixels = size_t(width) * size_t(height);
-  Header header{};
-  if (bytes->size() != sizeof(Header) + pixels * 4 * sizeof(float)) return std::nullopt;
-  std::memcpy(&header, bytes->data(), sizeof(Header));
-  if (header.magic != kMagic || header.key != key || header.width != uint32_t(width) || header.height != uint32_t(height)) {
+  if (!file || file->header.sizes[0] != uint32_t(width) || file->header.sizes[1] != uint32_t(height) ||
+      file->contents().size() != pixels * 4 * sizeof(float)) {
     return std::nullopt;
   }
   Panorama copy{ColorImage(width, height), ScalarImage(width, height)};
-  const char* from = bytes->data() + sizeof(Header);
+  const std::byte* from = file->contents().data();
   std::memcpy(copy.color.pixels.data(), from, pixels * sizeof(glm::vec3));
   std::memcpy(copy.distance.pixels.data(), from + pixels * sizeof(glm::vec3), pixels * sizeof(float));
-  if (pixelsChecksum(copy) != header.checksum || !holdsPanoramaValues(copy)) return std::nullopt;
+  if (pixelsChecksum(copy) != file->header.checksum || !holdsPanoramaValues(copy)) return std::nullopt;
   return copy;
 }
 
 void DownsampledPanoramaStore::store(const std::filesystem::path& path, uint64_t key, const Panorama& copy) {
-  const Header header{kMagic, key, pixelsChecksum(copy), uint32_t(copy.width()), uint32_t(copy.height())};
-  files_.write(path, {std::as_bytes(std::span(&header, 1)), std::as_bytes(std::span(copy.color.pixels)),
-                      std::as_bytes(std::span(copy.distance.pixels))});
+  const DerivedFileHeader header{kMagic, key, pixelsChecksum(copy), {uint32_t(copy.width()), uint32_t(copy.height())}};
+  files_.write(path, header, {std::as_bytes(std::span(copy.color.pixels)), std::as_bytes(std::span(copy.distance.pixels))});
 }
 
 }  // namespace triwalk

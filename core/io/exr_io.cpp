@@ -123,6 +123,12 @@ std::string pixelName(size_t index, int width) {
 
 }  // namespace
 
+bool acceptedPanoramaColor(glm::vec3 color) {
+  return std::isfinite(color.r) && std::isfinite(color.g) && std::isfinite(color.b);
+}
+
+bool acceptedPanoramaDistance(float distance) { return !std::isnan(distance) && distance >= 0.0f; }
+
 Panorama readPanoramaExr(const std::filesystem::path& path, std::optional<glm::ivec2> expectedSize) {
   const std::string name = path.string();
   return readingExr(path, [&] {
@@ -156,12 +162,11 @@ Panorama readPanoramaExr(const std::filesystem::path& path, std::optional<glm::i
     Panorama panorama{ColorImage(width, height), ScalarImage(width, height)};
     for (size_t i = 0; i < pixelCount; ++i) {
       const glm::vec3 color{float(channels[0][i]), float(channels[1][i]), float(channels[2][i])};
-      if (!std::isfinite(color.r) || !std::isfinite(color.g) || !std::isfinite(color.b)) {
-        throw InputError(name, "non-finite color at pixel " + pixelName(i, width));
-      }
+      if (!acceptedPanoramaColor(color)) throw InputError(name, "non-finite color at pixel " + pixelName(i, width));
       const float d = distance[i];
-      if (std::isnan(d)) throw InputError(name, "NaN distance at pixel " + pixelName(i, width));
-      if (d < 0.0f) throw InputError(name, "negative distance at pixel " + pixelName(i, width));
+      if (!acceptedPanoramaDistance(d)) {
+        throw InputError(name, std::string(std::isnan(d) ? "NaN" : "negative") + " distance at pixel " + pixelName(i, width));
+      }
       panorama.color.pixels[i] = color;
       panorama.distance.pixels[i] = d;
     }

@@ -18,6 +18,11 @@ namespace triwalk {
 // is every header attribute's size against what the file holds.
 inline constexpr int kMaxPanoramaWidth = 32768;
 
+// The values readPanoramaExr accepts: a finite colour; a distance neither
+// NaN nor negative (+inf: no surface).
+bool acceptedPanoramaColor(glm::vec3 color);
+bool acceptedPanoramaDistance(float distance);
+
 // Reads and validates: the size (at most kMaxPanoramaWidth x half, and
 // expectedSize if given), all four channels present, finite non-negative
 // color, distance neither NaN nor negative.

@@ -12,16 +12,9 @@ namespace triwalk {
 
 namespace {
 
-// A file: magic, the source's key, the checksum of the indices, the two
-// index counts, then the surface and sky indices (host byte order; a file
-// from a machine of the other order fails its key and is made again).
+// A file: the header (sizes: the surface and sky index counts), then the
+// surface and sky indices.
 constexpr std::array<char, 8> kMagic = {'T', 'W', 'M', 'E', 'S', 'H', '0', '1'};
-struct Header {
-  std::array<char, 8> magic;
-  uint64_t key;
-  uint64_t checksum;
-  uint32_t surfaceIndices, skyIndices;
-};
 
 // Everything the simplified triangles depend on.
 uint64_t sourceKey(const ViewRecord& view, const Panorama& panorama, const WarpOptions& options) {
@@ -85,28 +78,24 @@ WarpSource SimplifiedMeshStore::source(const ViewRecord& view, const Panorama& p
 
 std::optional<SimplifiedTriangles> SimplifiedMeshStore::load(const std::filesystem::path& path, uint64_t key,
                                                               uint32_t vertexCount) const {
-  const std::optional<std::string> file = files_.read(path);
+  const std::optional<DerivedFile> file = files_.read(path, kMagic, key);
   if (!file) return std::nullopt;
-  const std::string& bytes = *file;
-  Header header{};
-  if (bytes.size() < sizeof(Header)) return std::nullopt;
-  std::memcpy(&header, bytes.data(), sizeof(Header));
-  const size_t indexCount = size_t(header.surfaceIndices) + size_t(header.skyIndices);
-  if (header.magic != kMagic || header.key != key || header.surfaceIndices % 3 != 0 || header.skyIndices % 3 != 0 ||
-      bytes.size() != sizeof(Header) + indexCount * sizeof(uint32_t)) {
+  const auto [surfaceIndices, skyIndices] = file->header.sizes;
+  const std::span<const std::byte> contents = file->contents();
+  if (surfaceIndices % 3 != 0 || skyIndices % 3 != 0 ||
+      contents.size() != (size_t(surfaceIndices) + size_t(skyIndices)) * sizeof(uint32_t)) {
     return std::nullopt;
   }
   const auto indicesAt = [&](size_t first, size_t count) {
     std::vector<uint32_t> list(count);
     // An empty list's data() may be null, which memcpy must not be given.
-    const char* from = bytes.data() + sizeof(Header) + first * sizeof(uint32_t);
-    if (count > 0) std::memcpy(list.data(), from, count * sizeof(uint32_t));
+    if (count > 0) std::memcpy(list.data(), contents.data() + first * sizeof(uint32_t), count * sizeof(uint32_t));
     return list;
   };
   SimplifiedTriangles triangles;
-  triangles.surface = indicesAt(0, header.surfaceIndices);
-  triangles.sky = indicesAt(header.surfaceIndices, header.skyIndices);
-  if (indicesChecksum(triangles) != header.checksum) return std::nullopt;
+  triangles.surface = indicesAt(0, surfaceIndices);
+  triangles.sky = indicesAt(surfaceIndices, skyIndices);
+  if (indicesChecksum(triangles) != file->header.checksum) return std::nullopt;
   for (const std::vector<uint32_t>* list : {&triangles.surface, &triangles.sky}) {
     for (const uint32_t v : *list) {
       if (v >= vertexCount) return std::nullopt;
@@ -116,10 +105,9 @@ std::optional<SimplifiedTriangles> SimplifiedMeshStore::load(const std::filesyst
 }
 
 void SimplifiedMeshStore::store(const std::filesystem::path& path, uint64_t key, const SimplifiedTriangles& triangles) {
-  const Header header{kMagic, key, indicesChecksum(triangles), uint32_t(triangles.surface.size()),
-                      uint32_t(triangles.sky.size())};
-  files_.write(path, {std::as_bytes(std::span(&header, 1)), std::as_bytes(std::span(triangles.surface)),
-                      std::as_bytes(std::span(triangles.sky))});
+  const DerivedFileHeader header{
+      kMagic, key, indicesChecksum(triangles), {uint32_t(triangles.surface.size()), uint32_t(triangles.sky.size())}};
+  files_.write(path, header, {std::as_bytes(std::span(triangles.surface)), std::as_bytes(std::span(triangles.sky))});
 }
 
 }  // namespace triwalk

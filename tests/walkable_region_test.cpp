@@ -1,11 +1,17 @@
-// The walkable region: polygons with holes, their validation, and each
-// sample's share of the area.
+// The walkable region: polygons with holes, their validation, what lies
+// in it (points, segments, triangles), and each sample's share of the
+// area.
 
 #include "core/geometry/walkable_region.h"
 #include "core/support/errors.h"
 #include "tests/test_support.h"
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2.h>
 #include <doctest/doctest.h>
+
+#include <cmath>
+#include <random>
 
 namespace triwalk {
 
@@ -42,6 +48,142 @@ TEST_CASE("bad regions are refused with a one-line error naming the file and the
   // A hole poking out of its room.
   RegionPolygon leaky{{{0, 0}, {4, 0}, {4, 3}, {0, 3}}, {{{3, 1}, {5, 1}, {5, 2}, {3, 2}}}};
   testing::requireInputError([&] { WalkableRegion({leaky}, "r.json"); }, "r.json", "cross or touch");
+}
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+// A level's outline in miniature, every edge on the integer grid: a room
+// whose ceiling is a skyline of 60 columns 1 to 20 m high (about 200
+// edges), with 1 m pillars along its floor, and a second room beside it.
+std::vector<RegionPolygon> gridLevel() {
+  std::mt19937 random(7);
+  const int columns = 60;
+  std::vector<int> heights;
+  for (int x = 0; x < columns; ++x) heights.push_back(3 + int(random() % 18));
+  RegionPolygon room;
+  room.outer = {{0, 0}, {columns, 0}};
+  for (int x = columns - 1; x >= 0; --x) {
+    if (room.outer.back().y != heights[size_t(x)]) room.outer.emplace_back(x + 1, heights[size_t(x)]);
+    if (x == 0 || heights[size_t(x - 1)] != heights[size_t(x)]) room.outer.emplace_back(x, heights[size_t(x)]);
+  }
+  for (int x = 2; x + 1 < columns; x += 3) room.holes.push_back({{x, 1}, {x, 2}, {x + 1, 2}, {x + 1, 1}});
+  RegionPolygon side{{{columns + 2, 0}, {columns + 6, 0}, {columns + 6, 5}, {columns + 2, 5}}, {}};
+  return {room, side};
+}
+
+// The same region judged by CGAL: a point is in it when it is in or on an
+// outer ring and not strictly inside any of that polygon's holes.
+bool oracleContains(const std::vector<RegionPolygon>& polygons, glm::dvec2 p) {
+  const Kernel::Point_2 point(p.x, p.y);
+  auto side = [&](const Ring& ring) {
+    CGAL::Polygon_2<Kernel> polygon;
+    for (glm::dvec2 v : ring) polygon.push_back(Kernel::Point_2(v.x, v.y));
+    return polygon.bounded_side(point);
+  };
+  for (const RegionPolygon& polygon : polygons) {
+    if (side(polygon.outer) == CGAL::ON_UNBOUNDED_SIDE) continue;
+    if (std::none_of(polygon.holes.begin(), polygon.holes.end(),
+                     [&](const Ring& hole) { return side(hole) == CGAL::ON_BOUNDED_SIDE; })) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Whether a segment lies in a region made of whole grid cells: cut at
+// every grid line it crosses, each piece lies in one cell or along one
+// cell side, all in or all out, so its middle decides (the region is
+// closed, so the cuts themselves follow from the pieces beside them).
+bool oracleContainsSegment(const std::vector<RegionPolygon>& polygons, glm::dvec2 a, glm::dvec2 b) {
+  std::vector<double> cuts{0.0, 1.0};
+  for (int axis = 0; axis < 2; ++axis) {
+    if (a[axis] == b[axis]) continue;
+    for (double line = std::ceil(std::min(a[axis], b[axis])); line <= std::max(a[axis], b[axis]); line += 1.0) {
+      cuts.push_back((line - a[axis]) / (b[axis] - a[axis]));
+    }
+  }
+  std::sort(cuts.begin(), cuts.end());
+  if (!oracleContains(polygons, a) || !oracleContains(polygons, b)) return false;
+  for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+    if (cuts[k + 1] > cuts[k] && !oracleContains(polygons, a + 0.5 * (cuts[k] + cuts[k + 1]) * (b - a))) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("what lies in a level-like region: points, segments and triangles, against CGAL") {
+  const std::vector<RegionPolygon> polygons = gridLevel();
+  const WalkableRegion region(polygons, "level.json");
+  REQUIRE_FALSE(region.convex());
+  size_t edges = 0;
+  for (const RegionPolygon& polygon : polygons) {
+    edges += polygon.outer.size();
+    for (const Ring& hole : polygon.holes) edges += hole.size();
+  }
+  REQUIRE(edges > 150);
+
+  // Points on a quarter-metre lattice: a quarter of each coordinate on a
+  // grid line, so many on walls, corners and pillars' sides.
+  std::mt19937 random(11);
+  auto point = [&] { return glm::dvec2(-1.0 + 0.25 * double(random() % 285), -1.0 + 0.25 * double(random() % 93)); };
+  int inside = 0, onBoundary = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const glm::dvec2 p = point();
+    const bool expected = oracleContains(polygons, p);
+    CHECK_MESSAGE(region.contains(p) == expected, "(", p.x, ", ", p.y, ")");
+    inside += expected;
+    onBoundary += expected && !oracleContains(polygons, p + glm::dvec2(0.125, 0.125)) ;
+  }
+  CHECK(inside > 1000);
+  CHECK(onBoundary > 50);
+
+  // Segments from a few centimetres to the whole level, some along grid
+  // lines; triangles of three such points.
+  int segmentsInside = 0, trianglesInside = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const glm::dvec2 a = point();
+    const double reach = i % 3 == 0 ? 80.0 : i % 3 == 1 ? 6.0 : 1.5;
+    glm::dvec2 b = glm::round((a + reach * (glm::dvec2(double(random() % 2001), double(random() % 2001)) / 1000.0 - 1.0)) * 4.0) / 4.0;
+    if (i % 5 == 0) b.y = a.y;
+    if (i % 5 == 1) b.x = a.x;
+    if (a == b) continue;
+    const bool expected = oracleContainsSegment(polygons, a, b);
+    CHECK_MESSAGE(region.containsSegment(a, b) == expected, "(", a.x, ", ", a.y, ") to (", b.x, ", ", b.y, ")");
+    CHECK(region.lineOfSight(a, b) == expected);
+    segmentsInside += expected;
+
+    const glm::dvec2 c = glm::round((a + glm::dvec2(double(random() % 2001), double(random() % 2001)) / 250.0 - 4.0) * 4.0) / 4.0;
+    if (CGAL::orientation(Kernel::Point_2(a.x, a.y), Kernel::Point_2(b.x, b.y), Kernel::Point_2(c.x, c.y)) == CGAL::COLLINEAR) continue;
+    const bool edgesInside = oracleContainsSegment(polygons, a, b) && oracleContainsSegment(polygons, b, c) &&
+                             oracleContainsSegment(polygons, c, a);
+    bool aroundPillar = false;
+    const CGAL::Triangle_2<Kernel> triangle(Kernel::Point_2(a.x, a.y), Kernel::Point_2(b.x, b.y), Kernel::Point_2(c.x, c.y));
+    for (const RegionPolygon& polygon : polygons) {
+      for (const Ring& hole : polygon.holes) {
+        for (glm::dvec2 v : hole) aroundPillar |= triangle.bounded_side(Kernel::Point_2(v.x, v.y)) == CGAL::ON_BOUNDED_SIDE;
+      }
+    }
+    const bool triangleExpected = edgesInside && !aroundPillar;
+    CHECK_MESSAGE(region.containsTriangle(a, b, c) == triangleExpected, "(", a.x, ", ", a.y, "), (", b.x, ", ", b.y, "), (", c.x,
+                  ", ", c.y, ")");
+    trianglesInside += triangleExpected;
+  }
+  CHECK(segmentsInside > 300);
+  CHECK(trianglesInside > 100);
+
+  // Around each pillar a triangle whose edges pass beside it, refused;
+  // beside it one that stops short of it, kept.
+  for (const Ring& pillar : polygons[0].holes) {
+    const double x = pillar[0].x;
+    CHECK(region.containsSegment({x - 1.0, 0.5}, {x + 2.5, 0.5}));
+    CHECK(region.containsSegment({x + 2.5, 0.5}, {x + 0.5, 3.0}));
+    CHECK(region.containsSegment({x + 0.5, 3.0}, {x - 1.0, 0.5}));
+    CHECK_FALSE(region.containsTriangle({x - 1.0, 0.5}, {x + 2.5, 0.5}, {x + 0.5, 3.0}));
+    CHECK(region.containsTriangle({x - 1.0, 0.5}, {x - 0.25, 0.5}, {x - 0.25, 2.5}));
+  }
 }
 
 TEST_CASE("each sample's share of the area: a half on the region's edge, a quarter in its corners") {

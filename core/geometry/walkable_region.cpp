@@ -20,25 +20,30 @@ double signedArea(const Ring& ring) {
   return 0.5 * twice;
 }
 
+// Whether p lies in the closed box of segment ab.
+bool inBox(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) {
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
+}
+
 // Whether segments ab and cd share a point (exact predicates).
 bool segmentsMeet(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, glm::dvec2 d) {
   const int o1 = orientation(a, b, c), o2 = orientation(a, b, d), o3 = orientation(c, d, a), o4 = orientation(c, d, b);
   if (o1 * o2 < 0 && o3 * o4 < 0) return true;
-  auto onSegment = [](glm::dvec2 p, glm::dvec2 q, glm::dvec2 r) {  // r on pq, given collinear
-    return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y && r.y <= std::max(p.y, q.y);
-  };
-  return (o1 == 0 && onSegment(a, b, c)) || (o2 == 0 && onSegment(a, b, d)) || (o3 == 0 && onSegment(c, d, a)) ||
-         (o4 == 0 && onSegment(c, d, b));
+  // A collinear end point meets the other segment where it lies in its box.
+  return (o1 == 0 && inBox(a, b, c)) || (o2 == 0 && inBox(a, b, d)) || (o3 == 0 && inBox(c, d, a)) ||
+         (o4 == 0 && inBox(c, d, b));
 }
 
-// Crossing-number test, boundary points count as inside.
-bool insideRing(const Ring& ring, glm::dvec2 p, bool& onBoundary) {
+// Crossing-number test over a ring's edges (ends, two by two) that meet
+// the height of p: the others neither cross its ray nor hold it.
+// Boundary points count as inside. The box test comes before the exact
+// predicate, which is the costly part.
+bool insideRing(std::span<const glm::dvec2> ends, glm::dvec2 p, bool& onBoundary) {
   bool inside = false;
   onBoundary = false;
-  for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-    const glm::dvec2 a = ring[j], b = ring[i];
-    if (orientation(a, b, p) == 0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) &&
-        std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y)) {
+  for (size_t e = 0; e + 1 < ends.size(); e += 2) {
+    const glm::dvec2 a = ends[e], b = ends[e + 1];
+    if (inBox(a, b, p) && orientation(a, b, p) == 0) {
       onBoundary = true;
       return true;
     }
@@ -114,22 +119,77 @@ WalkableRegion::WalkableRegion(std::vector<RegionPolygon> polygons, const std::s
     }
   }
   convex_ = convexRegion(polygons_);
+  indexEdges();
 }
 
 WalkableRegion WalkableRegion::rectangle(glm::dvec2 lower, glm::dvec2 upper) {
   WalkableRegion region;
   region.polygons_.push_back({{lower, {upper.x, lower.y}, upper, {lower.x, upper.y}}, {}});
+  region.indexEdges();
   return region;
 }
 
+int WalkableRegion::bandOf(double y) const {
+  // Monotone in y, so an edge whose y-range holds y is listed in y's band.
+  const double band = (y - bands_.lowerY) / bands_.height;
+  if (!(band >= 0.0)) return 0;
+  return band >= double(bands_.count) ? bands_.count - 1 : int(band);
+}
+
+void WalkableRegion::indexEdges() {
+  const std::vector<const Ring*> rings = ringsOf(polygons_);
+  size_t edges = 0;
+  double lowerY = std::numeric_limits<double>::max(), upperY = std::numeric_limits<double>::lowest();
+  for (const Ring* ring : rings) {
+    edges += ring->size();
+    for (glm::dvec2 p : *ring) lowerY = std::min(lowerY, p.y), upperY = std::max(upperY, p.y);
+  }
+  // About four edges a band: a level's outline (0.25 m cells) gets bands a
+  // few cells high, a rectangle one band.
+  bands_ = {};
+  bands_.rings = int(rings.size());
+  bands_.count = int(std::clamp<size_t>(edges / 4, 1, 4096));
+  bands_.lowerY = lowerY;
+  bands_.height = std::max((upperY - lowerY) / double(bands_.count), std::numeric_limits<double>::min());
+  const size_t stride = size_t(bands_.rings) + 1;
+  std::vector<std::vector<glm::dvec2>> perBand(size_t(bands_.count) * stride);
+  for (size_t r = 0; r < rings.size(); ++r) {
+    const Ring& ring = *rings[r];
+    for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+      const glm::dvec2 a = ring[j], b = ring[i];
+      for (int band = bandOf(std::min(a.y, b.y)); band <= bandOf(std::max(a.y, b.y)); ++band) {
+        std::vector<glm::dvec2>& list = perBand[size_t(band) * stride + r];
+        list.push_back(a);
+        list.push_back(b);
+      }
+    }
+  }
+  bands_.first.reserve(perBand.size() + 1);
+  for (size_t band = 0; band < size_t(bands_.count); ++band) {
+    for (size_t r = 0; r < stride; ++r) {
+      bands_.first.push_back(bands_.ends.size());
+      if (r < rings.size()) bands_.ends.insert(bands_.ends.end(), perBand[band * stride + r].begin(), perBand[band * stride + r].end());
+    }
+  }
+  bands_.first.push_back(bands_.ends.size());
+}
+
 bool WalkableRegion::contains(glm::dvec2 point) const {
+  const size_t base = size_t(bandOf(point.y)) * (size_t(bands_.rings) + 1);
+  auto ringEnds = [&](size_t ring) {
+    return std::span<const glm::dvec2>(bands_.ends).subspan(bands_.first[base + ring],
+                                                            bands_.first[base + ring + 1] - bands_.first[base + ring]);
+  };
+  size_t ring = 0;
   for (const RegionPolygon& polygon : polygons_) {
+    const size_t outer = ring;
+    ring += 1 + polygon.holes.size();
     bool onBoundary = false;
-    if (!insideRing(polygon.outer, point, onBoundary)) continue;
+    if (!insideRing(ringEnds(outer), point, onBoundary)) continue;
     bool inHole = false;
-    for (const Ring& hole : polygon.holes) {
+    for (size_t hole = outer + 1; hole < ring; ++hole) {
       bool onHoleBoundary = false;
-      inHole |= insideRing(hole, point, onHoleBoundary) && !onHoleBoundary;
+      inHole |= insideRing(ringEnds(hole), point, onHoleBoundary) && !onHoleBoundary;
     }
     if (!inHole) return true;
   }
@@ -142,9 +202,19 @@ bool WalkableRegion::containsSegment(glm::dvec2 a, glm::dvec2 b) const {
   std::vector<double> cuts{0.0, 1.0};
   const glm::dvec2 direction = b - a;
   const double length2 = glm::dot(direction, direction);
+  // An edge that crosses the segment, or has its first end on it, meets
+  // the segment's box; skipping the edges that miss a slightly larger box
+  // (by far more than the rounding of the cut's parameter below) leaves
+  // every answer as the exact predicates on all edges give it.
+  const double margin = 1e-9 * (1.0 + std::max({std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y)}));
+  const glm::dvec2 lower = glm::min(a, b) - margin, upper = glm::max(a, b) + margin;
   for (const Ring* ring : ringsOf(polygons_)) {
     for (size_t i = 0; i < ring->size(); ++i) {
       const glm::dvec2 c = (*ring)[i], d = (*ring)[(i + 1) % ring->size()];
+      if (std::max(c.x, d.x) < lower.x || std::min(c.x, d.x) > upper.x || std::max(c.y, d.y) < lower.y ||
+          std::min(c.y, d.y) > upper.y) {
+        continue;
+      }
       const int o1 = orientation(a, b, c), o2 = orientation(a, b, d), o3 = orientation(c, d, a), o4 = orientation(c, d, b);
       if (o1 * o2 < 0 && o3 * o4 < 0) return false;
       if (o1 == 0 && length2 > 0.0) {
@@ -172,8 +242,10 @@ bool WalkableRegion::lineOfSight(glm::dvec2 a, glm::dvec2 b) const {
 bool WalkableRegion::containsTriangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) const {
   if (orientation(a, b, c) < 0) std::swap(b, c);
   if (!containsSegment(a, b) || !containsSegment(b, c) || !containsSegment(c, a)) return false;
+  const glm::dvec2 lower = glm::min(a, glm::min(b, c)), upper = glm::max(a, glm::max(b, c));
   for (const Ring* ring : ringsOf(polygons_)) {
     for (glm::dvec2 p : *ring) {
+      if (p.x <= lower.x || p.x >= upper.x || p.y <= lower.y || p.y >= upper.y) continue;  // not strictly inside
       if (orientation(a, b, p) > 0 && orientation(b, c, p) > 0 && orientation(c, a, p) > 0) return false;
     }
   }

@@ -59,8 +59,23 @@ public:
   static WalkableRegion fromJson(const nlohmann::json& value, const std::string& subject);
 
 private:
+  // The rings' edges by horizontal band, so that the point test reads the
+  // few edges its height meets instead of all of them (a level's boundary
+  // has hundreds, and the decimation asks millions of times). A band lists
+  // its edges ring by ring (rings numbered polygon by polygon, outer ring
+  // first), each once, as its two ends in the ring's order.
+  struct EdgeBands {
+    double lowerY = 0.0, height = 1.0;
+    int count = 1, rings = 0;
+    std::vector<size_t> first;  // [band * (rings + 1) + ring]: the ring's first edge in the band
+    std::vector<glm::dvec2> ends;
+  };
+  void indexEdges();
+  int bandOf(double y) const;
+
   std::vector<RegionPolygon> polygons_;
   bool convex_ = true;
+  EdgeBands bands_;
 };
 
 // A shared copy of region for meshes to keep; null for none or an empty one.

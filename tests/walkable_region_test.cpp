@@ -55,8 +55,8 @@ namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 // A level's outline in miniature, every edge on the integer grid: a room
-// whose ceiling is a skyline of 60 columns 1 to 20 m high (about 200
-// edges), with 1 m pillars along its floor, and a second room beside it.
+// whose ceiling is a skyline of 60 columns 3 to 20 m high, with 1 m
+// pillars along its floor, and a second room beside it (200 edges).
 std::vector<RegionPolygon> gridLevel() {
   std::mt19937 random(7);
   const int columns = 60;

@@ -128,14 +128,24 @@ TEST_CASE("what lies in a level-like region: points, segments and triangles, aga
   // Points on a quarter-metre lattice: a quarter of each coordinate on a
   // grid line, so many on walls, corners and pillars' sides.
   std::mt19937 random(11);
-  auto point = [&] { return glm::dvec2(-1.0 + 0.25 * double(random() % 285), -1.0 + 0.25 * double(random() % 93)); };
+  auto point = [&] {
+    const double x = -1.0 + 0.25 * double(random() % 285);
+    return glm::dvec2(x, -1.0 + 0.25 * double(random() % 93));
+  };
+  // A lattice point up to reach away from another along each axis.
+  auto near = [&](glm::dvec2 from, double reach) {
+    const double x = double(random() % 2001) / 1000.0 - 1.0;
+    const glm::dvec2 offset = reach * glm::dvec2(x, double(random() % 2001) / 1000.0 - 1.0);
+    return glm::round((from + offset) * 4.0) / 4.0;
+  };
+  auto kernelPoint = [](glm::dvec2 p) { return Kernel::Point_2(p.x, p.y); };
   int inside = 0, onBoundary = 0;
   for (int i = 0; i < 4000; ++i) {
     const glm::dvec2 p = point();
     const bool expected = oracleContains(polygons, p);
     CHECK_MESSAGE(region.contains(p) == expected, "(", p.x, ", ", p.y, ")");
     inside += expected;
-    onBoundary += expected && !oracleContains(polygons, p + glm::dvec2(0.125, 0.125)) ;
+    onBoundary += expected && !oracleContains(polygons, p + glm::dvec2(0.125, 0.125));
   }
   CHECK(inside > 1000);
   CHECK(onBoundary > 50);
@@ -146,7 +156,7 @@ TEST_CASE("what lies in a level-like region: points, segments and triangles, aga
   for (int i = 0; i < 3000; ++i) {
     const glm::dvec2 a = point();
     const double reach = i % 3 == 0 ? 80.0 : i % 3 == 1 ? 6.0 : 1.5;
-    glm::dvec2 b = glm::round((a + reach * (glm::dvec2(double(random() % 2001), double(random() % 2001)) / 1000.0 - 1.0)) * 4.0) / 4.0;
+    glm::dvec2 b = near(a, reach);
     if (i % 5 == 0) b.y = a.y;
     if (i % 5 == 1) b.x = a.x;
     if (a == b) continue;
@@ -155,20 +165,20 @@ TEST_CASE("what lies in a level-like region: points, segments and triangles, aga
     CHECK(region.lineOfSight(a, b) == expected);
     segmentsInside += expected;
 
-    const glm::dvec2 c = glm::round((a + glm::dvec2(double(random() % 2001), double(random() % 2001)) / 250.0 - 4.0) * 4.0) / 4.0;
-    if (CGAL::orientation(Kernel::Point_2(a.x, a.y), Kernel::Point_2(b.x, b.y), Kernel::Point_2(c.x, c.y)) == CGAL::COLLINEAR) continue;
+    const glm::dvec2 c = near(a, 4.0);
+    if (CGAL::collinear(kernelPoint(a), kernelPoint(b), kernelPoint(c))) continue;
     const bool edgesInside = oracleContainsSegment(polygons, a, b) && oracleContainsSegment(polygons, b, c) &&
                              oracleContainsSegment(polygons, c, a);
     bool aroundPillar = false;
-    const CGAL::Triangle_2<Kernel> triangle(Kernel::Point_2(a.x, a.y), Kernel::Point_2(b.x, b.y), Kernel::Point_2(c.x, c.y));
+    const CGAL::Triangle_2<Kernel> triangle(kernelPoint(a), kernelPoint(b), kernelPoint(c));
     for (const RegionPolygon& polygon : polygons) {
       for (const Ring& hole : polygon.holes) {
-        for (glm::dvec2 v : hole) aroundPillar |= triangle.bounded_side(Kernel::Point_2(v.x, v.y)) == CGAL::ON_BOUNDED_SIDE;
+        for (glm::dvec2 v : hole) aroundPillar |= triangle.bounded_side(kernelPoint(v)) == CGAL::ON_BOUNDED_SIDE;
       }
     }
     const bool triangleExpected = edgesInside && !aroundPillar;
-    CHECK_MESSAGE(region.containsTriangle(a, b, c) == triangleExpected, "(", a.x, ", ", a.y, "), (", b.x, ", ", b.y, "), (", c.x,
-                  ", ", c.y, ")");
+    CHECK_MESSAGE(region.containsTriangle(a, b, c) == triangleExpected, "(", a.x, ", ", a.y, "), (", b.x, ", ", b.y,
+                  "), (", c.x, ", ", c.y, ")");
     trianglesInside += triangleExpected;
   }
   CHECK(segmentsInside > 300);

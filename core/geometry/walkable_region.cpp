@@ -22,7 +22,8 @@ double signedArea(const Ring& ring) {
 
 // Whether p lies in the closed box of segment ab.
 bool inBox(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) {
-  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+         p.y <= std::max(a.y, b.y);
 }
 
 // Whether segments ab and cd share a point (exact predicates).
@@ -151,7 +152,7 @@ void WalkableRegion::indexEdges() {
   bands_.count = int(std::clamp<size_t>(edges / 4, 1, 4096));
   bands_.lowerY = lowerY;
   bands_.height = std::max((upperY - lowerY) / double(bands_.count), std::numeric_limits<double>::min());
-  const size_t stride = size_t(bands_.rings) + 1;
+  const size_t stride = rings.size();
   std::vector<std::vector<glm::dvec2>> perBand(size_t(bands_.count) * stride);
   for (size_t r = 0; r < rings.size(); ++r) {
     const Ring& ring = *rings[r];
@@ -165,20 +166,18 @@ void WalkableRegion::indexEdges() {
     }
   }
   bands_.first.reserve(perBand.size() + 1);
-  for (size_t band = 0; band < size_t(bands_.count); ++band) {
-    for (size_t r = 0; r < stride; ++r) {
-      bands_.first.push_back(bands_.ends.size());
-      if (r < rings.size()) bands_.ends.insert(bands_.ends.end(), perBand[band * stride + r].begin(), perBand[band * stride + r].end());
-    }
+  for (const std::vector<glm::dvec2>& list : perBand) {  // band by band, ring by ring
+    bands_.first.push_back(bands_.ends.size());
+    bands_.ends.insert(bands_.ends.end(), list.begin(), list.end());
   }
   bands_.first.push_back(bands_.ends.size());
 }
 
 bool WalkableRegion::contains(glm::dvec2 point) const {
-  const size_t base = size_t(bandOf(point.y)) * (size_t(bands_.rings) + 1);
+  const size_t base = size_t(bandOf(point.y)) * size_t(bands_.rings);
   auto ringEnds = [&](size_t ring) {
-    return std::span<const glm::dvec2>(bands_.ends).subspan(bands_.first[base + ring],
-                                                            bands_.first[base + ring + 1] - bands_.first[base + ring]);
+    const size_t first = bands_.first[base + ring];
+    return std::span<const glm::dvec2>(bands_.ends).subspan(first, bands_.first[base + ring + 1] - first);
   };
   size_t ring = 0;
   for (const RegionPolygon& polygon : polygons_) {

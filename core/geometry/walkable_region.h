@@ -67,7 +67,7 @@ private:
   struct EdgeBands {
     double lowerY = 0.0, height = 1.0;
     int count = 1, rings = 0;
-    std::vector<size_t> first;  // [band * (rings + 1) + ring]: the ring's first edge in the band
+    std::vector<size_t> first;  // [band * rings + ring]: the ring's first end in the band; one more at the end
     std::vector<glm::dvec2> ends;
   };
   void indexEdges();

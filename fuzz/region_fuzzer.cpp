@@ -1,6 +1,7 @@
 // Fuzzes the walkable-region reader: a JSON file whose content is the
 // manifest's "walkable" object; a region that validates is also sampled
-// (containment, area, area weights), as decimate does.
+// (containment of points, segments and triangles, area, area weights),
+// as decimate does.
 
 #include "core/geometry/walkable_region.h"
 #include "core/io/json_fields.h"
@@ -16,6 +17,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     region.bounds(low, high);
     (void)region.area();
     (void)region.contains((low + high) * 0.5);
+    (void)region.containsSegment(low, high);
+    (void)region.containsTriangle(low, high, {low.x, high.y});
     const std::vector<glm::dvec2> samples = {low, high, {low.x, high.y}};
     (void)sampleAreaWeights(samples, region);
   } catch (const InputError&) {

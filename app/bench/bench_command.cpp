@@ -4,6 +4,7 @@
 #include "app/bench/bench_groups.h"
 #include "app/commands/commands.h"
 #include "app/setup/option_checks.h"
+#include "app/setup/scene_loading.h"
 #include "core/support/errors.h"
 #include "render/gl/gl_context.h"
 #include "render/scene/scene_description.h"
@@ -20,6 +21,8 @@ void registerBenchCommand(CLI::App& app) {
     int captureViews = 20;
     BenchSelectionErrors decimationErrors;
     std::string dataset, selection;
+    std::string regionScene = "/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc";
+    SceneImportArguments regionImport;
   };
   auto arguments = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand("bench", "Measure throughput and print a table (machine, sizes, figures)");
@@ -47,6 +50,9 @@ void registerBenchCommand(CLI::App& app) {
   command->add_option("--dataset", arguments->dataset,
                       "Data set for the decimation figures (default: capture the default one first)");
   command->add_option("--selection", arguments->selection, "Selection for the viewer figure (default: all samples)");
+  command->add_option("--region-scene", arguments->regionScene, "Scene whose walkable region the region figure searches")
+      ->capture_default_str();
+  addSceneImportOptions(*command, arguments->regionImport);
   command->callback([arguments] {
     const std::set<std::string> only(arguments->only.begin(), arguments->only.end());
     auto selected = [&](const std::string& group) { return only.empty() || only.count(group) > 0; };
@@ -58,7 +64,7 @@ void registerBenchCommand(CLI::App& app) {
       const BenchViews views = captureBenchViews();
       benchCapture(table, views.scene, 1024, arguments->captureViews);
     }
-    if (selected("region")) benchRegion(table, "/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc");
+    if (selected("region")) benchRegion(table, arguments->regionScene, arguments->regionImport);
     if (selected("decimate")) {
       benchDecimate(table, loadSceneDescription(builtinScenePath()), arguments->dataset, arguments->decimationErrors);
     }

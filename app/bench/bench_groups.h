@@ -3,6 +3,7 @@
 // scene captured once at the sizes they need.
 
 #include "app/bench/bench_table.h"
+#include "app/setup/scene_loading.h"
 #include "core/image/image.h"
 #include "core/io/dataset.h"
 #include "core/selection/reference_selection.h"
@@ -33,7 +34,7 @@ void benchRender(BenchTable& table, const BenchViews& views, int frames);
 // The viewer's frame loop along a walk (selection empty: the dense mesh).
 void benchViewer(BenchTable& table, const Dataset& dataset, const std::string& selection, int frames);
 // The automatic walkable region of an imported scene (the FZK house).
-void benchRegion(BenchTable& table, const std::filesystem::path& scenePath);
+void benchRegion(BenchTable& table, const std::string& sceneSpec, const SceneImportArguments& import);
 // The errors the decimation figures select with: decimate's --error-width
 // and --error-stride.
 struct BenchSelectionErrors {

@@ -1,5 +1,6 @@
 #include "render/capture/gpu_scene.h"
 
+#include "render/capture/cube_face_culling.h"
 #include "render/gl/shader_program.h"
 
 #include <algorithm>
@@ -34,29 +35,27 @@ GpuScene::GpuScene(const Scene& scene) : materials_(scene.materials) {
   for (const SceneTexture& texture : scene.textures) textures_.push_back(uploadTexture(texture));
 
   std::vector<SceneVertex> vertices;
-  std::vector<uint32_t> indices;
   for (const SceneMesh& mesh : scene.meshes) {
     const uint32_t base = uint32_t(vertices.size());
-    ranges_.push_back({mesh.material, indices.size(), GLsizei(mesh.indices.size())});
+    ranges_.push_back({mesh.material, indices_.size(), GLsizei(mesh.indices.size())});
     vertices.insert(vertices.end(), mesh.vertices.begin(), mesh.vertices.end());
-    for (uint32_t index : mesh.indices) indices.push_back(base + index);
+    for (uint32_t index : mesh.indices) indices_.push_back(base + index);
   }
-  triangleCount_ = indices.size() / 3;
-  // Group draws by material so texture binds are few.
+  triangleCount_ = indices_.size() / 3;
   std::stable_sort(ranges_.begin(), ranges_.end(),
                    [](const DrawRange& a, const DrawRange& b) { return a.material < b.material; });
+  positions_.reserve(vertices.size());
+  for (const SceneVertex& vertex : vertices) positions_.push_back(vertex.position);
 
   vertices_ = createBuffer();
   glNamedBufferStorage(vertices_.get(), GLsizeiptr(std::max<size_t>(1, vertices.size()) * sizeof(SceneVertex)),
                        vertices.empty() ? nullptr : vertices.data(), 0);
-  indices_ = createBuffer();
-  glNamedBufferStorage(indices_.get(), GLsizeiptr(std::max<size_t>(1, indices.size()) * sizeof(uint32_t)),
-                       indices.empty() ? nullptr : indices.data(), 0);
+  faceIndexBuffer_ = createBuffer();
 
   vertexArray_ = createVertexArray();
   const GLuint vao = vertexArray_.get();
   glVertexArrayVertexBuffer(vao, 0, vertices_.get(), 0, sizeof(SceneVertex));
-  glVertexArrayElementBuffer(vao, indices_.get());
+  glVertexArrayElementBuffer(vao, faceIndexBuffer_.get());
   struct Attribute {
     GLuint location;
     GLint components;
@@ -75,12 +74,68 @@ GpuScene::GpuScene(const Scene& scene) : materials_(scene.materials) {
   }
 }
 
-void GpuScene::draw(ShaderProgram& program) const {
+void GpuScene::selectCubeFaceTriangles(glm::vec3 eye) {
+  // The vertex shader's own subtraction (shaders/scene.vert), so each
+  // vertex is beyond a plane here exactly when its clip coordinates are.
+  outcodes_.resize(positions_.size());
+  for (size_t i = 0; i < positions_.size(); ++i) outcodes_[i] = cubeFaceOutcode(positions_[i] - eye);
+  for (int face = 0; face < kCubeFaces; ++face) {
+    faceIndices_[size_t(face)].clear();
+    faceRanges_[size_t(face)].clear();
+  }
+  for (const DrawRange& range : ranges_) {
+    std::array<size_t, kCubeFaces> starts;
+    for (int face = 0; face < kCubeFaces; ++face) starts[size_t(face)] = faceIndices_[size_t(face)].size();
+    const uint32_t* triangle = indices_.data() + range.firstIndex;
+    for (GLsizei i = 0; i + 2 < range.indexCount; i += 3, triangle += 3) {
+      const uint8_t faces = cubeFacesTouched(outcodes_[triangle[0]], outcodes_[triangle[1]], outcodes_[triangle[2]]);
+      for (int face = 0; face < kCubeFaces; ++face) {
+        if (faces & (1u << face)) faceIndices_[size_t(face)].insert(faceIndices_[size_t(face)].end(), triangle, triangle + 3);
+      }
+    }
+    // Consecutive meshes of one material become one draw: the same
+    // triangles in the same order, with a fraction of the draw calls.
+    for (int face = 0; face < kCubeFaces; ++face) {
+      const size_t start = starts[size_t(face)], count = faceIndices_[size_t(face)].size() - start;
+      std::vector<DrawRange>& draws = faceRanges_[size_t(face)];
+      if (count == 0) continue;
+      if (!draws.empty() && draws.back().material == range.material) {
+        draws.back().indexCount += GLsizei(count);
+      } else {
+        draws.push_back({range.material, start, GLsizei(count)});
+      }
+    }
+  }
+  // One buffer, the faces one after the other.
+  size_t total = 0;
+  for (int face = 0; face < kCubeFaces; ++face) {
+    for (DrawRange& drawn : faceRanges_[size_t(face)]) drawn.firstIndex += total;
+    total += faceIndices_[size_t(face)].size();
+  }
+  glNamedBufferData(faceIndexBuffer_.get(), GLsizeiptr(std::max<size_t>(1, total) * sizeof(uint32_t)), nullptr,
+                    GL_STREAM_DRAW);
+  size_t offset = 0;
+  for (const std::vector<uint32_t>& indices : faceIndices_) {
+    if (!indices.empty()) {
+      glNamedBufferSubData(faceIndexBuffer_.get(), GLintptr(offset * sizeof(uint32_t)),
+                           GLsizeiptr(indices.size() * sizeof(uint32_t)), indices.data());
+    }
+    offset += indices.size();
+  }
+}
+
+size_t GpuScene::selectedTriangles() const {
+  size_t indices = 0;
+  for (const std::vector<uint32_t>& face : faceIndices_) indices += face.size();
+  return indices / 3;
+}
+
+void GpuScene::drawCubeFace(ShaderProgram& program, int face) const {
   glBindVertexArray(vertexArray_.get());
   program.set("diffuseTexture", 0);
   program.set("lightmapTexture", 1);
   int boundMaterial = -1;
-  for (const DrawRange& range : ranges_) {
+  for (const DrawRange& range : faceRanges_[size_t(face)]) {
     if (range.material != boundMaterial) {
       const SceneMaterial& material = materials_[size_t(range.material)];
       program.set("baseColor", material.baseColor);

@@ -1,10 +1,12 @@
 #pragma once
-// A Scene uploaded to the GPU: one vertex buffer, one index buffer, one
-// draw range per mesh, and every texture as mipmapped sRGB.
+// A Scene uploaded to the GPU: one vertex buffer, one draw range per mesh,
+// every texture as mipmapped sRGB, and per eye the triangles each cube
+// face can show (render/capture/cube_face_culling.h).
 
 #include "render/gl/gl_objects.h"
 #include "render/scene/scene.h"
 
+#include <array>
 #include <vector>
 
 namespace triwalk {
@@ -15,11 +17,18 @@ class GpuScene {
 public:
   explicit GpuScene(const Scene& scene);
 
-  // Draws every mesh with the scene shader (shaders/scene.*), which must
-  // be in use; sets the per-material uniforms and textures.
-  void draw(ShaderProgram& program) const;
+  // Chooses and uploads, for an eye, the triangles each face of a cube map
+  // around it can show (GL's face order), in the scene's draw order.
+  void selectCubeFaceTriangles(glm::vec3 eye);
+
+  // Draws the triangles of one face chosen by the last selectCubeFaceTriangles
+  // with the scene shader (shaders/scene.*), which must be in use; sets the
+  // per-material uniforms and textures.
+  void drawCubeFace(ShaderProgram& program, int face) const;
 
   size_t triangleCount() const { return triangleCount_; }
+  // What the last selectCubeFaceTriangles chose, summed over the six faces.
+  size_t selectedTriangles() const;
 
 private:
   struct DrawRange {
@@ -30,11 +39,19 @@ private:
 
   std::vector<SceneMaterial> materials_;
   std::vector<GlTexture> textures_;
-  std::vector<DrawRange> ranges_;
+  std::vector<DrawRange> ranges_;  // by material: few texture binds
+  std::vector<glm::vec3> positions_;
+  std::vector<uint32_t> indices_;  // ranges_ index into these
   GlBuffer vertices_;
-  GlBuffer indices_;
   GlVertexArray vertexArray_;
   size_t triangleCount_ = 0;
+
+  // The last eye's selection: per face, one draw per material (into
+  // faceIndexBuffer_), and the buffer's contents before upload.
+  std::array<std::vector<DrawRange>, 6> faceRanges_;
+  std::array<std::vector<uint32_t>, 6> faceIndices_;
+  std::vector<uint32_t> outcodes_;
+  GlBuffer faceIndexBuffer_;
 };
 
 }  // namespace triwalk

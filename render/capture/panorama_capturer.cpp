@@ -12,7 +12,8 @@ constexpr int kMaxLights = 16;  // shaders/scene.frag
 constexpr float kNearPlane = 0.01f;  // metres
 
 // The orientation OpenGL expects for each cube face when it is rendered
-// through a framebuffer and then sampled by direction.
+// through a framebuffer and then sampled by direction, in GL's face order
+// (+X, -X, +Y, -Y, +Z, -Z), which the face culling shares.
 struct FaceView {
   glm::vec3 forward, up;
 };
@@ -108,6 +109,7 @@ void PanoramaCapturer::renderCubeFaces(glm::vec3 position) {
     lightRanges.push_back(scene_.lights[size_t(i)].range);
   }
 
+  gpuScene_.selectCubeFaceTriangles(position);
   for (int face = 0; face < 6; ++face) {
     const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), kFaceViews[face].forward, kFaceViews[face].up);
     const glm::mat4 viewProjection = projection * view;
@@ -128,7 +130,7 @@ void PanoramaCapturer::renderCubeFaces(glm::vec3 position) {
       sceneProgram_.setArray("lightColors", lightColors.data(), lightCount);
       sceneProgram_.setArray("lightRanges", lightRanges.data(), lightCount);
     }
-    gpuScene_.draw(sceneProgram_);
+    gpuScene_.drawCubeFace(sceneProgram_, face);
 
     // Sky last, at depth 0 (infinity), only where no surface was drawn:
     // the depth test rejects covered pixels before they are shaded.

@@ -33,6 +33,9 @@ public:
   int width() const { return width_; }
   int height() const { return width_ / 2; }
   size_t sceneTriangles() const { return gpuScene_.triangleCount(); }
+  // Triangles the last capture drew over its six cube faces: each only on
+  // the faces it can show on (render/capture/cube_face_culling.h).
+  size_t trianglesDrawn() const { return gpuScene_.selectedTriangles(); }
 
 private:
   void renderCubeFaces(glm::vec3 position);

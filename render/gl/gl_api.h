@@ -47,6 +47,7 @@
   X(PFNGLBINDSAMPLERPROC, glBindSampler)                                  \
   X(PFNGLCREATEBUFFERSPROC, glCreateBuffers)                              \
   X(PFNGLDELETEBUFFERSPROC, glDeleteBuffers)                              \
+  X(PFNGLNAMEDBUFFERDATAPROC, glNamedBufferData)                          \
   X(PFNGLNAMEDBUFFERSTORAGEPROC, glNamedBufferStorage)                    \
   X(PFNGLNAMEDBUFFERSUBDATAPROC, glNamedBufferSubData)                    \
   X(PFNGLBINDBUFFERBASEPROC, glBindBufferBase)                            \

@@ -14,6 +14,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstring>
 #include <fstream>
 
 namespace triwalk {
@@ -132,6 +133,84 @@ TEST_CASE("EGL and OSMesa capture the same panorama") {
     largest = std::max({largest, d.r, d.g, d.b, std::abs(egl.distance.pixels[i] - osmesa.distance.pixels[i])});
   }
   CHECK(largest <= 1e-5f);
+}
+
+// The box room with three screens inside, each textured and alpha-tested:
+// a grate (a texture whose every other column is transparent) at x = 3,
+// an opaque texture with vertex alpha 0.3 (every fragment discarded) at
+// x = 0.6, and an opaque texture at y = 2.5.
+Scene boxRoomWithScreens() {
+  Scene scene = boxRoom();
+  SceneTexture grate{"grate", 8, 8, std::vector<uint8_t>(8 * 8 * 4, 255)};
+  for (size_t texel = 0; texel < 64; ++texel) grate.rgba[4 * texel + 3] = texel % 2 == 0 ? 0 : 255;
+  scene.textures.push_back(grate);
+  scene.textures.push_back({"opaque", 8, 8, std::vector<uint8_t>(8 * 8 * 4, 255)});
+  const auto addScreen = [&](int texture, bool vertexAlpha, glm::vec3 origin, glm::vec3 u, glm::vec3 v) {
+    SceneMaterial material;
+    material.diffuseTexture = texture;
+    material.alphaTest = true;
+    material.useVertexColor = vertexAlpha;
+    scene.materials.push_back(material);
+    MeshBuilder builder(int(scene.materials.size()) - 1, 0.4f);
+    builder.addQuad(origin, u, v, 0.5f);
+    SceneMesh mesh = builder.take();
+    if (vertexAlpha) {
+      for (SceneVertex& vertex : mesh.vertices) vertex.color.a = 0.3f;
+    }
+    scene.meshes.push_back(std::move(mesh));
+  };
+  addScreen(0, false, {3.0f, 0.3f, 0.3f}, {0.0f, 2.4f, 0.0f}, {0.0f, 0.0f, 1.9f});
+  addScreen(1, true, {0.6f, 0.3f, 0.3f}, {0.0f, 2.4f, 0.0f}, {0.0f, 0.0f, 1.9f});
+  addScreen(1, false, {0.3f, 2.5f, 0.3f}, {3.4f, 0.0f, 0.0f}, {0.0f, 0.0f, 1.9f});
+  return scene;
+}
+
+TEST_CASE("the distance-only capture has the full capture's distances to the bit, through a grate and vertex alpha") {
+  auto context = createHeadlessContext();
+  const Scene scene = boxRoomWithScreens();
+  PanoramaCapturer capturer(scene, 256);
+  const Panorama full = capturer.capture(kCamera);
+  const ScalarImage distance = capturer.captureDistance(kCamera);
+  REQUIRE(distance.pixelCount() == full.distance.pixelCount());
+  CHECK(std::memcmp(distance.pixels.data(), full.distance.pixels.data(), distance.pixels.size() * sizeof(float)) == 0);
+
+  // What the screens leave visible: the wall through half the grate, the
+  // wall behind the vertex-alpha screen everywhere, the opaque screen itself.
+  const EquirectProjection projection{distance.width, distance.height, 0.0f};
+  int grate = 0, throughGrate = 0, hidden = 0, behindHidden = 0, opaque = 0, other = 0;
+  for (int v = 0; v < distance.height; ++v) {
+    for (int u = 0; u < distance.width; ++u) {
+      const glm::vec3 direction = projection.pixelDirection(u, v);
+      const glm::vec3 onGrate = kCamera + direction * ((3.0f - kCamera.x) / direction.x);
+      const float d = distance.at(u, v);
+      if (direction.x > 0.0f && onGrate.y > 0.35f && onGrate.y < 2.65f && onGrate.z > 0.35f && onGrate.z < 2.15f) {
+        const float toGrate = (3.0f - kCamera.x) / direction.x;
+        if (std::abs(d - toGrate) < 0.01f * toGrate)
+          ++grate;
+        else if (std::abs(d - (4.0f - kCamera.x) / direction.x) < 0.01f * d)
+          ++throughGrate;
+        else
+          ++other;
+      }
+      const glm::vec3 onHidden = kCamera + direction * ((0.6f - kCamera.x) / direction.x);
+      if (direction.x < 0.0f && onHidden.y > 0.35f && onHidden.y < 2.4f && onHidden.z > 0.35f && onHidden.z < 2.15f) {
+        if (std::abs(d - (0.6f - kCamera.x) / direction.x) < 0.01f * d)
+          ++hidden;
+        else if (std::abs(d - (0.0f - kCamera.x) / direction.x) < 0.01f * d)
+          ++behindHidden;
+      }
+      if (direction.y > 0.3f && std::abs(direction.x) < 0.2f && std::abs(direction.z) < 0.2f) {
+        opaque += std::abs(d - (2.5f - kCamera.y) / direction.y) < 0.01f * d;
+      }
+    }
+  }
+  INFO("grate ", grate, ", through it ", throughGrate, ", neither ", other, "; hidden screen ", hidden, ", behind it ",
+       behindHidden, "; opaque ", opaque);
+  CHECK(grate > 300);
+  CHECK(throughGrate > 300);
+  CHECK(hidden == 0);
+  CHECK(behindHidden > 1000);
+  CHECK(opaque > 100);
 }
 
 TEST_CASE("built-in scene: tens of thousands of triangles over a 10 x 5 m walkable area") {

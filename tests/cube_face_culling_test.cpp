@@ -59,7 +59,8 @@ TEST_CASE("cube face culling never leaves out a triangle that meets a face, and 
     const glm::vec3 centre(coordinate(random), coordinate(random), coordinate(random));
     const glm::vec3 scale = trial % 4 == 0 ? glm::vec3(8.0f) : glm::vec3(1.0f);  // a quarter are large
     glm::vec3 corners[3];
-    for (glm::vec3& corner : corners) corner = centre + scale * glm::vec3(offset(random), offset(random), offset(random));
+    for (glm::vec3& corner : corners)
+      corner = centre + scale * glm::vec3(offset(random), offset(random), offset(random));
     const uint8_t faces = facesOf(corners[0], corners[1], corners[2]);
     for (int face = 0; face < kCubeFaces; ++face) {
       if (faces & (1u << face)) continue;

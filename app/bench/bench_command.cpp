@@ -50,7 +50,8 @@ void registerBenchCommand(CLI::App& app) {
   command->add_option("--dataset", arguments->dataset,
                       "Data set for the decimation figures (default: capture the default one first)");
   command->add_option("--selection", arguments->selection, "Selection for the viewer figure (default: all samples)");
-  command->add_option("--region-scene", arguments->regionScene, "Scene whose walkable region the region figure searches")
+  command
+      ->add_option("--region-scene", arguments->regionScene, "Scene whose walkable region the region figure searches")
       ->capture_default_str();
   addSceneImportOptions(*command, arguments->regionImport);
   command->callback([arguments] {

@@ -6,8 +6,9 @@ namespace triwalk {
 
 void benchRegion(BenchTable& table, const std::string& sceneSpec, const SceneImportArguments& import) {
   if (sceneSpec != "builtin" && !std::filesystem::exists(sceneSpec)) {
-    throw InputError(sceneSpec, "the region figure searches this scene (--region-scene; the default comes with "
-                                "assimp-testmodels)");
+    throw InputError(sceneSpec,
+                     "the region figure searches this scene (--region-scene; the default comes with "
+                     "assimp-testmodels)");
   }
   const LoadedScene loaded = loadSceneForCapture(sceneSpec, import);
   RegionSearchOptions options;
@@ -19,8 +20,9 @@ void benchRegion(BenchTable& table, const std::string& sceneSpec, const SceneImp
              loaded.name + ", " + std::to_string(loaded.scene.triangleCount()) + " triangles, " +
                  formatNumber(options.cellSize, 2) + " m cells",
              formatNumber(seconds, 1) + " s",
-             std::to_string(proposal.probedCells) + " cells probed (" + formatNumber(proposal.probedCells / seconds, 0) +
-                 "/s), " + formatNumber(proposal.region.area(), 1) + " m2 in " + std::to_string(proposal.parts) + " part(s)"});
+             std::to_string(proposal.probedCells) + " cells probed (" +
+                 formatNumber(proposal.probedCells / seconds, 0) + "/s), " + formatNumber(proposal.region.area(), 1) +
+                 " m2 in " + std::to_string(proposal.parts) + " part(s)"});
 }
 
 }  // namespace triwalk

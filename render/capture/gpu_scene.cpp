@@ -29,10 +29,24 @@ GlTexture uploadTexture(const SceneTexture& texture) {
   return name;
 }
 
+bool opaque(const SceneTexture& texture) {
+  for (size_t i = 3; i < texture.rgba.size(); i += 4) {
+    if (texture.rgba[i] != 255) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 GpuScene::GpuScene(const Scene& scene) : materials_(scene.materials) {
   for (const SceneTexture& texture : scene.textures) textures_.push_back(uploadTexture(texture));
+  for (const SceneMaterial& material : materials_) {
+    const bool textureAlpha = material.diffuseTexture >= 0 && !opaque(scene.textures[size_t(material.diffuseTexture)]);
+    discards_.push_back(!material.alphaTest       ? Discard::Never
+                        : textureAlpha            ? Discard::ByTexture
+                        : material.useVertexColor ? Discard::ByVertexAlpha
+                                                  : Discard::Never);
+  }
 
   std::vector<SceneVertex> vertices;
   for (const SceneMesh& mesh : scene.meshes) {
@@ -90,7 +104,8 @@ void GpuScene::selectCubeFaceTriangles(glm::vec3 eye) {
     for (GLsizei i = 0; i + 2 < range.indexCount; i += 3, triangle += 3) {
       const uint8_t faces = cubeFacesTouched(outcodes_[triangle[0]], outcodes_[triangle[1]], outcodes_[triangle[2]]);
       for (int face = 0; face < kCubeFaces; ++face) {
-        if (faces & (1u << face)) faceIndices_[size_t(face)].insert(faceIndices_[size_t(face)].end(), triangle, triangle + 3);
+        if (faces & (1u << face))
+          faceIndices_[size_t(face)].insert(faceIndices_[size_t(face)].end(), triangle, triangle + 3);
       }
     }
     // Consecutive meshes of one material become one draw: the same
@@ -130,14 +145,29 @@ size_t GpuScene::selectedTriangles() const {
   return indices / 3;
 }
 
-void GpuScene::drawCubeFace(ShaderProgram& program, int face) const {
+void GpuScene::drawCubeFace(ShaderProgram& program, int face, Outputs outputs) const {
   glBindVertexArray(vertexArray_.get());
   program.set("diffuseTexture", 0);
   program.set("lightmapTexture", 1);
-  int boundMaterial = -1;
-  for (const DrawRange& range : faceRanges_[size_t(face)]) {
-    if (range.material != boundMaterial) {
-      const SceneMaterial& material = materials_[size_t(range.material)];
+  // State changes between draws are most of a small face's time on
+  // llvmpipe, texture binds above all. A texture already on its unit (a
+  // lightmap page many materials share) is not bound again. For distances
+  // only, a fragment's plane and distance depend only on whether it is
+  // discarded: a material whose texture cannot discard is drawn without
+  // it, and a run of materials that discard alike is one draw (their
+  // triangles are one after the other in the buffer, in the same order).
+  int boundTextures[2] = {-1, -1};
+  const auto bindTexture = [&](int unit, int texture) {
+    if (texture < 0 || boundTextures[unit] == texture) return;
+    glBindTextureUnit(GLuint(unit), textures_[size_t(texture)].get());
+    boundTextures[unit] = texture;
+  };
+  const std::vector<DrawRange>& draws = faceRanges_[size_t(face)];  // one per material, consecutive
+  for (size_t first = 0; first < draws.size();) {
+    const SceneMaterial& material = materials_[size_t(draws[first].material)];
+    const Discard discard = discards_[size_t(draws[first].material)];
+    size_t end = first + 1;
+    if (outputs == Outputs::ColorAndDistance || discard == Discard::ByTexture) {
       program.set("baseColor", material.baseColor);
       program.set("hasDiffuse", material.diffuseTexture >= 0 ? 1 : 0);
       program.set("hasLightmap", material.lightmapTexture >= 0 ? 1 : 0);
@@ -146,12 +176,19 @@ void GpuScene::drawCubeFace(ShaderProgram& program, int face) const {
       program.set("alphaTest", material.alphaTest ? 1 : 0);
       program.set("specularStrength", material.specular);
       program.set("shininess", material.shininess);
-      if (material.diffuseTexture >= 0) glBindTextureUnit(0, textures_[size_t(material.diffuseTexture)].get());
-      if (material.lightmapTexture >= 0) glBindTextureUnit(1, textures_[size_t(material.lightmapTexture)].get());
-      boundMaterial = range.material;
+      bindTexture(0, material.diffuseTexture);
+      if (outputs == Outputs::ColorAndDistance) bindTexture(1, material.lightmapTexture);
+    } else {
+      while (end < draws.size() && discards_[size_t(draws[end].material)] == discard) ++end;
+      program.set("hasDiffuse", 0);
+      program.set("hasLightmap", 0);
+      program.set("useVertexColor", discard == Discard::ByVertexAlpha ? 1 : 0);
+      program.set("alphaTest", discard == Discard::ByVertexAlpha ? 1 : 0);
     }
-    glDrawElements(GL_TRIANGLES, range.indexCount, GL_UNSIGNED_INT,
-                   reinterpret_cast<const void*>(range.firstIndex * sizeof(uint32_t)));
+    const size_t indexCount = draws[end - 1].firstIndex + size_t(draws[end - 1].indexCount) - draws[first].firstIndex;
+    glDrawElements(GL_TRIANGLES, GLsizei(indexCount), GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(draws[first].firstIndex * sizeof(uint32_t)));
+    first = end;
   }
   glBindVertexArray(0);
 }

@@ -21,10 +21,15 @@ public:
   // around it can show (GL's face order), in the scene's draw order.
   void selectCubeFaceTriangles(glm::vec3 eye);
 
+  // What a draw must get right: everything, or the distances only (the
+  // planes and distances of the surfaces, where only an alpha-tested
+  // material's texture can change which surface is there).
+  enum class Outputs { ColorAndDistance, Distance };
+
   // Draws the triangles of one face chosen by the last selectCubeFaceTriangles
   // with the scene shader (shaders/scene.*), which must be in use; sets the
-  // per-material uniforms and textures.
-  void drawCubeFace(ShaderProgram& program, int face) const;
+  // per-material uniforms and the textures the outputs need.
+  void drawCubeFace(ShaderProgram& program, int face, Outputs outputs) const;
 
   size_t triangleCount() const { return triangleCount_; }
   // What the last selectCubeFaceTriangles chose, summed over the six faces.
@@ -37,7 +42,13 @@ private:
     GLsizei indexCount = 0;
   };
 
+  // What can discard a material's fragments (shaders/scene.frag's alpha
+  // test), so what its distances depend on. A texture whose every alpha is
+  // 255 filters to exactly 1 at every level and never discards.
+  enum class Discard { Never, ByVertexAlpha, ByTexture };
+
   std::vector<SceneMaterial> materials_;
+  std::vector<Discard> discards_;  // per material
   std::vector<GlTexture> textures_;
   std::vector<DrawRange> ranges_;  // by material: few texture binds
   std::vector<glm::vec3> positions_;

@@ -93,7 +93,7 @@ PanoramaCapturer::PanoramaCapturer(const Scene& scene, int width, int faceSize)
   linearSampler_ = createSampler(GL_LINEAR);
 }
 
-void PanoramaCapturer::renderCubeFaces(glm::vec3 position) {
+void PanoramaCapturer::renderCubeFaces(glm::vec3 position, GpuScene::Outputs outputs) {
   const glm::mat4 projection = cubeFaceProjection();
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glViewport(0, 0, faceSize_, faceSize_);
@@ -130,7 +130,7 @@ void PanoramaCapturer::renderCubeFaces(glm::vec3 position) {
       sceneProgram_.setArray("lightColors", lightColors.data(), lightCount);
       sceneProgram_.setArray("lightRanges", lightRanges.data(), lightCount);
     }
-    gpuScene_.drawCubeFace(sceneProgram_, face);
+    gpuScene_.drawCubeFace(sceneProgram_, face, outputs);
 
     // Sky last, at depth 0 (infinity), only where no surface was drawn:
     // the depth test rejects covered pixels before they are shaded.
@@ -169,7 +169,7 @@ void PanoramaCapturer::resampleToPanorama() {
 }
 
 Panorama PanoramaCapturer::capture(glm::vec3 position) {
-  renderCubeFaces(position);
+  renderCubeFaces(position, GpuScene::Outputs::ColorAndDistance);
   resampleToPanorama();
 
   // Framebuffer row 0 holds panorama row v = 0 (the pass maps it so), so
@@ -185,6 +185,18 @@ Panorama PanoramaCapturer::capture(glm::vec3 position) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   for (size_t i = 0; i < rgba.size(); ++i) panorama.color.pixels[i] = glm::max(glm::vec3(rgba[i]), 0.0f);
   return panorama;
+}
+
+ScalarImage PanoramaCapturer::captureDistance(glm::vec3 position) {
+  renderCubeFaces(position, GpuScene::Outputs::Distance);
+  resampleToPanorama();
+  ScalarImage distance(width_, height());
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, panoramaFramebuffer_.get());
+  glNamedFramebufferReadBuffer(panoramaFramebuffer_.get(), GL_COLOR_ATTACHMENT1);
+  glReadPixels(0, 0, width_, height(), GL_RED, GL_FLOAT, distance.pixels.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return distance;
 }
 
 }  // namespace triwalk

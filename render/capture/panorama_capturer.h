@@ -29,6 +29,10 @@ public:
   PanoramaCapturer(const Scene& scene, int width, int faceSize = 0);
 
   Panorama capture(glm::vec3 position);
+  // The distance panorama alone, the same bits as capture's, faster: the
+  // textures only an alpha test needs are bound (the walkable region's
+  // probes, which read distances only).
+  ScalarImage captureDistance(glm::vec3 position);
 
   int width() const { return width_; }
   int height() const { return width_ / 2; }
@@ -38,7 +42,7 @@ public:
   size_t trianglesDrawn() const { return gpuScene_.selectedTriangles(); }
 
 private:
-  void renderCubeFaces(glm::vec3 position);
+  void renderCubeFaces(glm::vec3 position, GpuScene::Outputs outputs);
   void resampleToPanorama();
 
   const Scene& scene_;

@@ -18,15 +18,15 @@ namespace {
 
 constexpr float kSpawnAboveFloor = 0.61f;  // Quake 3 spawn origins stand 24 units above the floor
 
-bool walkableView(const Panorama& panorama, float eyeHeight) {
+bool walkableView(const ScalarImage& distance, float eyeHeight) {
   size_t finite = 0;
   float nearest = INFINITY;
-  for (float d : panorama.distance.pixels) {
+  for (float d : distance.pixels) {
     finite += std::isfinite(d);
     nearest = std::min(nearest, d);
   }
-  const float down = panorama.distance.at(panorama.width() / 2, panorama.height() - 1);
-  return double(finite) >= 0.95 * double(panorama.distance.pixelCount()) && nearest >= 0.25f &&
+  const float down = distance.at(distance.width / 2, distance.height - 1);
+  return double(finite) >= 0.95 * double(distance.pixelCount()) && nearest >= 0.25f &&
          std::abs(down - eyeHeight) <= 0.2f * eyeHeight;
 }
 
@@ -123,7 +123,8 @@ public:
     if (state < 0) {
       throwIfInterrupted();
       const glm::dvec2 centre = grid_.centre(x, y);
-      state = walkableView(capturer_.capture(glm::vec3(centre.x, centre.y, floors_[size_t(floor)] + eyeHeight_)), eyeHeight_);
+      state = walkableView(
+          capturer_.captureDistance(glm::vec3(centre.x, centre.y, floors_[size_t(floor)] + eyeHeight_)), eyeHeight_);
       ++probed_;
       progress_.advance();
     }

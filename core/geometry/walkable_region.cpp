@@ -173,6 +173,13 @@ void WalkableRegion::indexEdges() {
   bands_.first.push_back(bands_.ends.size());
 }
 
+std::span<const glm::dvec2> WalkableRegion::bandEnds(double lowerY, double upperY) const {
+  if (bands_.first.empty()) return {};  // an empty region
+  const size_t rings = size_t(bands_.rings);
+  const size_t first = bands_.first[size_t(bandOf(lowerY)) * rings];
+  return std::span<const glm::dvec2>(bands_.ends).subspan(first, bands_.first[size_t(bandOf(upperY) + 1) * rings] - first);
+}
+
 bool WalkableRegion::contains(glm::dvec2 point) const {
   const size_t base = size_t(bandOf(point.y)) * size_t(bands_.rings);
   auto ringEnds = [&](size_t ring) {
@@ -205,21 +212,22 @@ bool WalkableRegion::containsSegment(glm::dvec2 a, glm::dvec2 b) const {
   // the segment's box; skipping the edges that miss a slightly larger box
   // (by far more than the rounding of the cut's parameter below) leaves
   // every answer as the exact predicates on all edges give it.
+  // Such an edge is listed in a band of the box's heights; an edge listed
+  // in several is tested again, which adds only a repeated cut.
   const double margin = 1e-9 * (1.0 + std::max({std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y)}));
   const glm::dvec2 lower = glm::min(a, b) - margin, upper = glm::max(a, b) + margin;
-  for (const Ring* ring : ringsOf(polygons_)) {
-    for (size_t i = 0; i < ring->size(); ++i) {
-      const glm::dvec2 c = (*ring)[i], d = (*ring)[(i + 1) % ring->size()];
-      if (std::max(c.x, d.x) < lower.x || std::min(c.x, d.x) > upper.x || std::max(c.y, d.y) < lower.y ||
-          std::min(c.y, d.y) > upper.y) {
-        continue;
-      }
-      const int o1 = orientation(a, b, c), o2 = orientation(a, b, d), o3 = orientation(c, d, a), o4 = orientation(c, d, b);
-      if (o1 * o2 < 0 && o3 * o4 < 0) return false;
-      if (o1 == 0 && length2 > 0.0) {
-        const double t = glm::dot(c - a, direction) / length2;
-        if (t > 0.0 && t < 1.0) cuts.push_back(t);
-      }
+  const std::span<const glm::dvec2> ends = bandEnds(lower.y, upper.y);
+  for (size_t e = 0; e + 1 < ends.size(); e += 2) {
+    const glm::dvec2 c = ends[e], d = ends[e + 1];
+    if (std::max(c.x, d.x) < lower.x || std::min(c.x, d.x) > upper.x || std::max(c.y, d.y) < lower.y ||
+        std::min(c.y, d.y) > upper.y) {
+      continue;
+    }
+    const int o1 = orientation(a, b, c), o2 = orientation(a, b, d), o3 = orientation(c, d, a), o4 = orientation(c, d, b);
+    if (o1 * o2 < 0 && o3 * o4 < 0) return false;
+    if (o1 == 0 && length2 > 0.0) {
+      const double t = glm::dot(c - a, direction) / length2;
+      if (t > 0.0 && t < 1.0) cuts.push_back(t);
     }
   }
   std::sort(cuts.begin(), cuts.end());
@@ -241,12 +249,13 @@ bool WalkableRegion::lineOfSight(glm::dvec2 a, glm::dvec2 b) const {
 bool WalkableRegion::containsTriangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) const {
   if (orientation(a, b, c) < 0) std::swap(b, c);
   if (!containsSegment(a, b) || !containsSegment(b, c) || !containsSegment(c, a)) return false;
+  // Every ring vertex is the first end of an edge listed in its own band.
   const glm::dvec2 lower = glm::min(a, glm::min(b, c)), upper = glm::max(a, glm::max(b, c));
-  for (const Ring* ring : ringsOf(polygons_)) {
-    for (glm::dvec2 p : *ring) {
-      if (p.x <= lower.x || p.x >= upper.x || p.y <= lower.y || p.y >= upper.y) continue;  // not strictly inside
-      if (orientation(a, b, p) > 0 && orientation(b, c, p) > 0 && orientation(c, a, p) > 0) return false;
-    }
+  const std::span<const glm::dvec2> ends = bandEnds(lower.y, upper.y);
+  for (size_t e = 0; e < ends.size(); e += 2) {
+    const glm::dvec2 p = ends[e];
+    if (p.x <= lower.x || p.x >= upper.x || p.y <= lower.y || p.y >= upper.y) continue;  // not strictly inside
+    if (orientation(a, b, p) > 0 && orientation(b, c, p) > 0 && orientation(c, a, p) > 0) return false;
   }
   return true;
 }

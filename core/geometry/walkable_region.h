@@ -72,6 +72,8 @@ private:
   };
   void indexEdges();
   int bandOf(double y) const;
+  // The ends of every edge listed in the bands from lowerY's to upperY's.
+  std::span<const glm::dvec2> bandEnds(double lowerY, double upperY) const;
 
   std::vector<RegionPolygon> polygons_;
   bool convex_ = true;

@@ -33,7 +33,7 @@ void benchWarp(BenchTable& table, const BenchViews& views, int decimationWidth);
 void benchRender(BenchTable& table, const BenchViews& views, int frames);
 // The viewer's frame loop along a walk (selection empty: the dense mesh).
 void benchViewer(BenchTable& table, const Dataset& dataset, const std::string& selection, int frames);
-// The automatic walkable region of an imported scene (the FZK house).
+// The automatic walkable region of a scene (bench's default: the FZK house).
 void benchRegion(BenchTable& table, const std::string& sceneSpec, const SceneImportArguments& import);
 // The errors the decimation figures select with: decimate's --error-width
 // and --error-stride.

@@ -60,8 +60,9 @@ public:
 
 private:
   // The rings' edges by horizontal band, so that the point test reads the
-  // few edges its height meets instead of all of them (a level's boundary
-  // has hundreds, and the decimation asks millions of times). A band lists
+  // few edges its height meets instead of all of them, and the segment and
+  // triangle tests those of the heights they span (a level's boundary has
+  // hundreds, and the decimation asks millions of times). A band lists
   // its edges ring by ring (rings numbered polygon by polygon, outer ring
   // first), each once, as its two ends in the ring's order.
   struct EdgeBands {

@@ -104,8 +104,9 @@ void GpuScene::selectCubeFaceTriangles(glm::vec3 eye) {
     for (GLsizei i = 0; i + 2 < range.indexCount; i += 3, triangle += 3) {
       const uint8_t faces = cubeFacesTouched(outcodes_[triangle[0]], outcodes_[triangle[1]], outcodes_[triangle[2]]);
       for (int face = 0; face < kCubeFaces; ++face) {
-        if (faces & (1u << face))
+        if (faces & (1u << face)) {
           faceIndices_[size_t(face)].insert(faceIndices_[size_t(face)].end(), triangle, triangle + 3);
+        }
       }
     }
     // Consecutive meshes of one material become one draw: the same

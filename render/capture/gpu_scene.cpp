@@ -1,6 +1,5 @@
 #include "render/capture/gpu_scene.h"
 
-#include "render/capture/cube_face_culling.h"
 #include "render/gl/shader_program.h"
 
 #include <algorithm>
@@ -39,9 +38,13 @@ bool opaque(const SceneTexture& texture) {
 }  // namespace
 
 GpuScene::GpuScene(const Scene& scene) : materials_(scene.materials) {
-  for (const SceneTexture& texture : scene.textures) textures_.push_back(uploadTexture(texture));
+  std::vector<bool> opaqueTextures;  // many materials share a texture: each is read once
+  for (const SceneTexture& texture : scene.textures) {
+    textures_.push_back(uploadTexture(texture));
+    opaqueTextures.push_back(opaque(texture));
+  }
   for (const SceneMaterial& material : materials_) {
-    const bool textureAlpha = material.diffuseTexture >= 0 && !opaque(scene.textures[size_t(material.diffuseTexture)]);
+    const bool textureAlpha = material.diffuseTexture >= 0 && !opaqueTextures[size_t(material.diffuseTexture)];
     discards_.push_back(!material.alphaTest       ? Discard::Never
                         : textureAlpha            ? Discard::ByTexture
                         : material.useVertexColor ? Discard::ByVertexAlpha

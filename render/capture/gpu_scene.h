@@ -3,6 +3,7 @@
 // every texture as mipmapped sRGB, and per eye the triangles each cube
 // face can show (render/capture/cube_face_culling.h).
 
+#include "render/capture/cube_face_culling.h"
 #include "render/gl/gl_objects.h"
 #include "render/scene/scene.h"
 
@@ -59,8 +60,8 @@ private:
 
   // The last eye's selection: per face, one draw per material (into
   // faceIndexBuffer_), and the buffer's contents before upload.
-  std::array<std::vector<DrawRange>, 6> faceRanges_;
-  std::array<std::vector<uint32_t>, 6> faceIndices_;
+  std::array<std::vector<DrawRange>, kCubeFaces> faceRanges_;
+  std::array<std::vector<uint32_t>, kCubeFaces> faceIndices_;
   std::vector<uint32_t> outcodes_;
   GlBuffer faceIndexBuffer_;
 };

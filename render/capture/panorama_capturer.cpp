@@ -168,21 +168,23 @@ void PanoramaCapturer::resampleToPanorama() {
   glBindSampler(3, 0);
 }
 
+void PanoramaCapturer::readPanorama(GLenum attachment, GLenum format, void* pixels) const {
+  // Framebuffer row 0 holds panorama row v = 0 (the pass maps it so), so
+  // the read-back is already top-down.
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, panoramaFramebuffer_.get());
+  glNamedFramebufferReadBuffer(panoramaFramebuffer_.get(), attachment);
+  glReadPixels(0, 0, width_, height(), format, GL_FLOAT, pixels);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 Panorama PanoramaCapturer::capture(glm::vec3 position) {
   renderCubeFaces(position, GpuScene::Outputs::ColorAndDistance);
   resampleToPanorama();
-
-  // Framebuffer row 0 holds panorama row v = 0 (the pass maps it so), so
-  // the read-back is already top-down.
   Panorama panorama{ColorImage(width_, height()), ScalarImage(width_, height())};
   std::vector<glm::vec4> rgba(panorama.color.pixelCount());
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, panoramaFramebuffer_.get());
-  glNamedFramebufferReadBuffer(panoramaFramebuffer_.get(), GL_COLOR_ATTACHMENT0);
-  glReadPixels(0, 0, width_, height(), GL_RGBA, GL_FLOAT, rgba.data());
-  glNamedFramebufferReadBuffer(panoramaFramebuffer_.get(), GL_COLOR_ATTACHMENT1);
-  glReadPixels(0, 0, width_, height(), GL_RED, GL_FLOAT, panorama.distance.pixels.data());
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  readPanorama(GL_COLOR_ATTACHMENT0, GL_RGBA, rgba.data());
+  readPanorama(GL_COLOR_ATTACHMENT1, GL_RED, panorama.distance.pixels.data());
   for (size_t i = 0; i < rgba.size(); ++i) panorama.color.pixels[i] = glm::max(glm::vec3(rgba[i]), 0.0f);
   return panorama;
 }
@@ -191,11 +193,7 @@ ScalarImage PanoramaCapturer::captureDistance(glm::vec3 position) {
   renderCubeFaces(position, GpuScene::Outputs::Distance);
   resampleToPanorama();
   ScalarImage distance(width_, height());
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, panoramaFramebuffer_.get());
-  glNamedFramebufferReadBuffer(panoramaFramebuffer_.get(), GL_COLOR_ATTACHMENT1);
-  glReadPixels(0, 0, width_, height(), GL_RED, GL_FLOAT, distance.pixels.data());
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  readPanorama(GL_COLOR_ATTACHMENT1, GL_RED, distance.pixels.data());
   return distance;
 }
 

@@ -44,6 +44,8 @@ public:
 private:
   void renderCubeFaces(glm::vec3 position, GpuScene::Outputs outputs);
   void resampleToPanorama();
+  // One attachment of the panorama framebuffer, as floats.
+  void readPanorama(GLenum attachment, GLenum format, void* pixels) const;
 
   const Scene& scene_;
   int width_;

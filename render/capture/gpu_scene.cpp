@@ -10,6 +10,19 @@ namespace triwalk {
 
 namespace {
 
+// The most indices one draw of a face's triangles holds. On llvmpipe a
+// draw with a triangle to clip (one reaching behind the eye: most draws
+// of a face) runs through Mesa's draw pipeline, whose output buffer holds
+// 4 KiB of vertices, a few dozen; at each flush of it, every vertex the
+// draw fetched is marked unemitted again, so a draw's cost grows with the
+// square of its size. A region probe's faces are 16 pixels wide, so that
+// loop was the largest single part of the region search (15% of its CPU
+// on oacmpdm1). Draws of 32 triangles, all given in one call, bound it; a
+// full capture, bound by its fragments, takes as long either way
+// (docs/BENCHMARKS.md, "the region search's draws in runs of 32 triangles").
+constexpr size_t kIndicesPerDraw = 96;
+static_assert(kIndicesPerDraw % 3 == 0, "whole triangles");
+
 GlTexture uploadTexture(const SceneTexture& texture) {
   GlTexture name = createTexture(GL_TEXTURE_2D);
   const int levels = 1 + int(std::floor(std::log2(float(std::max(texture.width, texture.height)))));
@@ -167,6 +180,8 @@ void GpuScene::drawCubeFace(ShaderProgram& program, int face, Outputs outputs) c
     boundTextures[unit] = texture;
   };
   const std::vector<DrawRange>& draws = faceRanges_[size_t(face)];  // one per material, consecutive
+  std::vector<GLsizei> counts;
+  std::vector<const void*> offsets;
   for (size_t first = 0; first < draws.size();) {
     const SceneMaterial& material = materials_[size_t(draws[first].material)];
     const Discard discard = discards_[size_t(draws[first].material)];
@@ -190,8 +205,13 @@ void GpuScene::drawCubeFace(ShaderProgram& program, int face, Outputs outputs) c
       program.set("alphaTest", discard == Discard::ByVertexAlpha ? 1 : 0);
     }
     const size_t indexCount = draws[end - 1].firstIndex + size_t(draws[end - 1].indexCount) - draws[first].firstIndex;
-    glDrawElements(GL_TRIANGLES, GLsizei(indexCount), GL_UNSIGNED_INT,
-                   reinterpret_cast<const void*>(draws[first].firstIndex * sizeof(uint32_t)));
+    counts.clear();
+    offsets.clear();
+    for (size_t drawn = 0; drawn < indexCount; drawn += kIndicesPerDraw) {
+      counts.push_back(GLsizei(std::min(kIndicesPerDraw, indexCount - drawn)));
+      offsets.push_back(reinterpret_cast<const void*>((draws[first].firstIndex + drawn) * sizeof(uint32_t)));
+    }
+    glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(), GLsizei(counts.size()));
     first = end;
   }
   glBindVertexArray(0);

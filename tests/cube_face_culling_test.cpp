@@ -86,6 +86,30 @@ TEST_CASE("cube face culling never leaves out a triangle that meets a face, and 
   CHECK(double(facesKept) / triangles < 1.6);
 }
 
+TEST_CASE("the outcodes of many vertices at once are each vertex's own, to the bit") {
+  // Points on the planes (components equal up to sign, zeros of either
+  // sign) and random ones, around eyes that make the subtraction round;
+  // 4k + 3 of them, so the lanes and the scalar tail both run.
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> coordinate(-20.0f, 20.0f);
+  std::vector<glm::vec3> points;
+  for (const float a : {0.0f, -0.0f, 1.0f, -1.0f, 2.5f}) {
+    for (const float b : {0.0f, -0.0f, 1.0f, -1.0f, -2.5f}) points.push_back({a, b, -a});
+  }
+  while (points.size() % 4 != 3 || points.size() < 4003) {
+    const float x = coordinate(random);
+    points.push_back({x, points.size() % 3 == 0 ? -x : coordinate(random), coordinate(random)});
+  }
+  for (const glm::vec3 eye : {glm::vec3(0.0f), glm::vec3(0.1f, -7.3f, 1.6f), glm::vec3(1.0f, 1.0f, -1.0f)}) {
+    std::vector<uint32_t> codes(points.size());
+    cubeFaceOutcodes(points, eye, codes);
+    size_t differing = 0;
+    for (size_t i = 0; i < points.size(); ++i) differing += codes[i] != cubeFaceOutcode(points[i] - eye);
+    INFO("eye " << eye.x << ", " << eye.y << ", " << eye.z);
+    CHECK(differing == 0);
+  }
+}
+
 TEST_CASE("a capture draws each triangle only on the cube faces it can show on") {
   auto context = createHeadlessContext();
   const Scene scene = loadSceneDescription(builtinScenePath());

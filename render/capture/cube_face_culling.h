@@ -17,6 +17,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <span>
 
 namespace triwalk {
 
@@ -26,6 +27,13 @@ constexpr int kCubeFaces = 6;
 // plane k of face f: the four side planes, then the plane through the eye
 // across the face's axis (behind the eye).
 uint32_t cubeFaceOutcode(glm::vec3 relative);
+
+// cubeFaceOutcode(positions[i] - eye) into codes[i] for every i, four
+// vertices at a time in float lanes, with the same subtractions and
+// comparisons lane by lane (so the same bits). A small probe of a level
+// computes the code of every vertex of the level for each eye: in the
+// scalar form this was the largest single part of the region search.
+void cubeFaceOutcodes(std::span<const glm::vec3> positions, glm::vec3 eye, std::span<uint32_t> codes);
 
 // Bit f set when a triangle with these vertex outcodes may show on face f.
 inline uint8_t cubeFacesTouched(uint32_t a, uint32_t b, uint32_t c) {

@@ -108,7 +108,7 @@ void GpuScene::selectCubeFaceTriangles(glm::vec3 eye) {
   // The vertex shader's own subtraction (shaders/scene.vert), so each
   // vertex is beyond a plane here exactly when its clip coordinates are.
   outcodes_.resize(positions_.size());
-  for (size_t i = 0; i < positions_.size(); ++i) outcodes_[i] = cubeFaceOutcode(positions_[i] - eye);
+  cubeFaceOutcodes(positions_, eye, outcodes_);
   for (int face = 0; face < kCubeFaces; ++face) {
     faceIndices_[size_t(face)].clear();
     faceRanges_[size_t(face)].clear();

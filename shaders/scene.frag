@@ -3,25 +3,18 @@
 // or by ambient + point lights, Blinn-Phong highlights that move with the
 // viewpoint) and records, per fragment, the plane of its triangle so that
 // the panorama's distance can be computed exactly along any ray.
-in vec3 relativePosition;
+#include "scene_surface.glsl"
 in vec3 worldNormal;
-in vec2 surfaceUv;
 in vec2 surfaceLightmapUv;
-in vec4 vertexColor;
 
 layout(location = 0) out vec4 outColor;     // linear RGB
 layout(location = 1) out vec4 outPlane;     // unit normal facing the camera, n . p
 layout(location = 2) out float outDistance; // metres
 
 const int kMaxLights = 16;
-uniform vec3 baseColor;
-uniform bool hasDiffuse;
-uniform sampler2D diffuseTexture;
 uniform bool hasLightmap;
 uniform sampler2D lightmapTexture;
 uniform float lightmapScale;
-uniform bool useVertexColor;
-uniform bool alphaTest;
 uniform float specularStrength;
 uniform float shininess;
 uniform vec3 ambient;
@@ -31,17 +24,8 @@ uniform vec3 lightColors[kMaxLights];
 uniform float lightRanges[kMaxLights];
 
 void main() {
-  vec4 albedo = vec4(baseColor, 1.0);
-  if (hasDiffuse) albedo *= texture(diffuseTexture, surfaceUv);
-  if (useVertexColor) albedo *= vertexColor;
-  if (alphaTest && albedo.a < 0.5) discard;
-  // llvmpipe interpolates garbage (NaN, inf) across zero-area triangles,
-  // which imported meshes have: such a fragment is no surface at all.
-  if (any(isnan(relativePosition)) || any(isinf(relativePosition))) discard;
-
-  // The exact plane of this triangle (flat, from screen derivatives).
-  vec3 faceNormal = normalize(cross(dFdx(relativePosition), dFdy(relativePosition)));
-  if (dot(faceNormal, relativePosition) > 0.0) faceNormal = -faceNormal;
+  vec4 albedo = surfaceAlbedo();
+  vec4 plane = surfacePlane();
 
   // Walls are seen from both sides: light the side facing the camera.
   vec3 n = normalize(worldNormal);
@@ -67,6 +51,6 @@ void main() {
     }
   }
   outColor = vec4(albedo.rgb * light + highlight, 1.0);
-  outPlane = vec4(faceNormal, dot(faceNormal, relativePosition));
+  outPlane = plane;
   outDistance = length(relativePosition);
 }

@@ -28,8 +28,9 @@ public:
   enum class Outputs { ColorAndDistance, Distance };
 
   // Draws the triangles of one face chosen by the last selectCubeFaceTriangles
-  // with the scene shader (shaders/scene.*), which must be in use; sets the
-  // per-material uniforms and the textures the outputs need.
+  // with a scene shader (shaders/scene.vert with scene.frag, or with
+  // scene_distance.frag for distances only), which must be in use; sets
+  // the per-material uniforms and the textures the outputs need.
   void drawCubeFace(ShaderProgram& program, int face, Outputs outputs) const;
 
   size_t triangleCount() const { return triangleCount_; }

@@ -51,8 +51,13 @@ void setSkyUniforms(ShaderProgram& program, const SkyModel& sky) {
 int defaultCubeFaceSize(int width) { return std::max(16, (width * 3 / 8 + 7) / 8 * 8); }
 
 PanoramaCapturer::PanoramaCapturer(const Scene& scene, int width, int faceSize)
-    : scene_(scene), width_(width), faceSize_(faceSize > 0 ? faceSize : defaultCubeFaceSize(width)), gpuScene_(scene),
-      sceneProgram_("scene.vert", "scene.frag"), skyProgram_("fullscreen.vert", "capture_sky.frag"),
+    : scene_(scene),
+      width_(width),
+      faceSize_(faceSize > 0 ? faceSize : defaultCubeFaceSize(width)),
+      gpuScene_(scene),
+      sceneProgram_("scene.vert", "scene.frag"),
+      distanceProgram_("scene.vert", "scene_distance.frag"),
+      skyProgram_("fullscreen.vert", "capture_sky.frag"),
       equirectProgram_("fullscreen.vert", "capture_equirect.frag") {
   colorCube_ = createTexture(GL_TEXTURE_CUBE_MAP);
   glTextureStorage2D(colorCube_.get(), 1, GL_RGBA16F, faceSize_, faceSize_);
@@ -120,17 +125,20 @@ void PanoramaCapturer::renderCubeFaces(glm::vec3 position, GpuScene::Outputs out
     glDepthFunc(GL_GREATER);
     glClearDepth(0.0);
     glClear(GL_DEPTH_BUFFER_BIT);
-    sceneProgram_.use();
-    sceneProgram_.set("viewProjection", viewProjection);
-    sceneProgram_.set("eye", position);
-    sceneProgram_.set("ambient", scene_.ambient);
-    sceneProgram_.set("lightCount", lightCount);
-    if (lightCount > 0) {
-      sceneProgram_.setArray("lightPositions", lightPositions.data(), lightCount);
-      sceneProgram_.setArray("lightColors", lightColors.data(), lightCount);
-      sceneProgram_.setArray("lightRanges", lightRanges.data(), lightCount);
+    ShaderProgram& program = outputs == GpuScene::Outputs::Distance ? distanceProgram_ : sceneProgram_;
+    program.use();
+    program.set("viewProjection", viewProjection);
+    program.set("eye", position);
+    if (outputs == GpuScene::Outputs::ColorAndDistance) {
+      program.set("ambient", scene_.ambient);
+      program.set("lightCount", lightCount);
+      if (lightCount > 0) {
+        program.setArray("lightPositions", lightPositions.data(), lightCount);
+        program.setArray("lightColors", lightColors.data(), lightCount);
+        program.setArray("lightRanges", lightRanges.data(), lightCount);
+      }
     }
-    gpuScene_.drawCubeFace(sceneProgram_, face, outputs);
+    gpuScene_.drawCubeFace(program, face, outputs);
 
     // Sky last, at depth 0 (infinity), only where no surface was drawn:
     // the depth test rejects covered pixels before they are shaded.

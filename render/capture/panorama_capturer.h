@@ -29,9 +29,10 @@ public:
   PanoramaCapturer(const Scene& scene, int width, int faceSize = 0);
 
   Panorama capture(glm::vec3 position);
-  // The distance panorama alone, the same bits as capture's, faster: the
-  // textures only an alpha test needs are bound (the walkable region's
-  // probes, which read distances only).
+  // The distance panorama alone, the same bits as capture's, faster: a
+  // shader that does not shade (shaders/scene_distance.frag), and only the
+  // textures an alpha test needs bound (the walkable region's probes,
+  // which read distances only).
   ScalarImage captureDistance(glm::vec3 position);
 
   int width() const { return width_; }
@@ -52,6 +53,7 @@ private:
   int faceSize_;
   GpuScene gpuScene_;
   ShaderProgram sceneProgram_;
+  ShaderProgram distanceProgram_;  // captureDistance's: no shading
   ShaderProgram skyProgram_;
   ShaderProgram equirectProgram_;
   GlTexture colorCube_, planeCube_, distanceCube_, depth_;

@@ -186,7 +186,7 @@ void GpuScene::drawCubeFace(ShaderProgram& program, int face, Outputs outputs) c
     const SceneMaterial& material = materials_[size_t(draws[first].material)];
     const Discard discard = discards_[size_t(draws[first].material)];
     size_t end = first + 1;
-    if (outputs == Outputs::ColorAndDistance || discard == Discard::ByTexture) {
+    if (outputs == Outputs::ColorAndDistance) {
       program.set("baseColor", material.baseColor);
       program.set("hasDiffuse", material.diffuseTexture >= 0 ? 1 : 0);
       program.set("hasLightmap", material.lightmapTexture >= 0 ? 1 : 0);
@@ -196,13 +196,19 @@ void GpuScene::drawCubeFace(ShaderProgram& program, int face, Outputs outputs) c
       program.set("specularStrength", material.specular);
       program.set("shininess", material.shininess);
       bindTexture(0, material.diffuseTexture);
-      if (outputs == Outputs::ColorAndDistance) bindTexture(1, material.lightmapTexture);
+      bindTexture(1, material.lightmapTexture);
     } else {
-      while (end < draws.size() && discards_[size_t(draws[end].material)] == discard) ++end;
-      program.set("hasDiffuse", 0);
-      program.set("hasLightmap", 0);
-      program.set("useVertexColor", discard == Discard::ByVertexAlpha ? 1 : 0);
-      program.set("alphaTest", discard == Discard::ByVertexAlpha ? 1 : 0);
+      // The distance shader reads only what can discard (its albedo's
+      // alpha does not depend on the base colour).
+      if (discard != Discard::ByTexture) {
+        while (end < draws.size() && discards_[size_t(draws[end].material)] == discard) ++end;
+      }
+      const bool byTexture = discard == Discard::ByTexture;
+      const bool vertexAlpha = discard == Discard::ByVertexAlpha || (byTexture && material.useVertexColor);
+      program.set("hasDiffuse", byTexture ? 1 : 0);
+      program.set("useVertexColor", vertexAlpha ? 1 : 0);
+      program.set("alphaTest", discard != Discard::Never ? 1 : 0);
+      if (byTexture) bindTexture(0, material.diffuseTexture);
     }
     const size_t indexCount = draws[end - 1].firstIndex + size_t(draws[end - 1].indexCount) - draws[first].firstIndex;
     counts.clear();

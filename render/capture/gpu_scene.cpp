@@ -165,7 +165,7 @@ size_t GpuScene::selectedTriangles() const {
 void GpuScene::drawCubeFace(ShaderProgram& program, int face, Outputs outputs) const {
   glBindVertexArray(vertexArray_.get());
   program.set("diffuseTexture", 0);
-  program.set("lightmapTexture", 1);
+  if (outputs == Outputs::ColorAndDistance) program.set("lightmapTexture", 1);  // the distance shader has no lightmap
   // State changes between draws are most of a small face's time on
   // llvmpipe, texture binds above all. A texture already on its unit (a
   // lightmap page many materials share) is not bound again. For distances

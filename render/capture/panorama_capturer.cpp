@@ -105,7 +105,9 @@ void PanoramaCapturer::renderCubeFaces(glm::vec3 position, GpuScene::Outputs out
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
 
-  const int lightCount = std::min<int>(kMaxLights, int(scene_.lights.size()));
+  // Distances only (the region search's probes) need no lights.
+  const int lightCount =
+      outputs == GpuScene::Outputs::ColorAndDistance ? std::min<int>(kMaxLights, int(scene_.lights.size())) : 0;
   std::vector<glm::vec3> lightPositions, lightColors;
   std::vector<float> lightRanges;
   for (int i = 0; i < lightCount; ++i) {

@@ -382,6 +382,106 @@ TEST_CASE("decimation serves samples outside the mesh as eval does: the nearest 
   CHECK(blindNearest > 0);
 }
 
+TEST_CASE(
+    "where the boundary may shrink, a reference leaves a straight stretch of it only once no other collapse is "
+    "valid, and the covered area only shrinks") {
+  // A 10 x 6 m room around a 6 x 2 m block, sampled on a 1 m lattice (as a
+  // capture samples a region): a corridor two samples wide all round,
+  // every sample on the boundary, every side a straight row. A ring cannot
+  // be cut, so once its corners are cut off the collapses left are those
+  // that take a reference off a straight side.
+  RegionPolygon ring;
+  ring.outer = {{0, 0}, {10, 0}, {10, 6}, {0, 6}};
+  ring.holes = {{{2, 2}, {2, 4}, {8, 4}, {8, 2}}};
+  const WalkableRegion region({ring}, "ring");
+  std::vector<glm::dvec2> positions;
+  for (double x = 0.5; x < 10.0; x += 1.0) {
+    for (double y = 0.5; y < 6.0; y += 1.0) {
+      if (region.contains({x, y})) positions.push_back({x, y});
+    }
+  }
+  REQUIRE(positions.size() == 48);
+  auto sampleAt = [&](double x, double y) {
+    return int(std::find(positions.begin(), positions.end(), glm::dvec2(x, y)) - positions.begin());
+  };
+  const FormulaErrors::Formula formula = [&](const Triangle& t, int destination) {
+    double error = 0.0;
+    for (int v : t) {
+      const glm::dvec2 a = positions[size_t(v)], b = positions[size_t(destination)];
+      error += glm::length(a - b) + (region.lineOfSight(a, b) ? 0.0 : 10.0);
+    }
+    return error;
+  };
+  FormulaErrors errors(formula);
+  DecimationOptions options;
+  options.maxError = 0.0;
+  options.targetSamples = 8;
+  const ViewMesh dense = ViewMesh::delaunay(positions, {}, "ring", &region);
+  EdgeCollapseDecimator decimator(dense, DecimationErrors{nullptr, &errors}, options);
+
+  // (2.5, 0.5) lies on the south side between (1.5, 0.5) and (3.5, 0.5);
+  // while other collapses are valid (a corner's) it stays.
+  CHECK_FALSE(decimator.isValidCollapse(sampleAt(2.5, 0.5), sampleAt(3.5, 0.5), sampleAt(3.5, 0.5)));
+  CHECK(decimator.isValidCollapse(sampleAt(0.5, 0.5), sampleAt(1.5, 0.5), sampleAt(1.5, 0.5)));
+
+  auto area = [&](const ViewMesh& mesh) {
+    double sum = 0.0;
+    for (const Triangle& t : mesh.triangles()) {
+      const glm::dvec2 a = positions[size_t(t[0])], b = positions[size_t(t[1])], c = positions[size_t(t[2])];
+      sum += 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+    }
+    return sum;
+  };
+  // No collapse onto an endpoint or a free sample is valid in this mesh,
+  // as a decimator that has just been made from it sees it.
+  auto stuck = [&](const ViewMesh& mesh) {
+    FormulaErrors freshErrors(formula);
+    EdgeCollapseDecimator fresh(mesh, DecimationErrors{nullptr, &freshErrors}, options);
+    for (const Triangle& t : mesh.triangles()) {
+      for (int e = 0; e < 3; ++e) {
+        for (int placement = 0; placement < int(positions.size()); ++placement) {
+          if (fresh.isValidCollapse(t[size_t(e)], t[size_t((e + 1) % 3)], placement)) return false;
+        }
+      }
+    }
+    return true;
+  };
+  ViewMesh before = dense;
+  uint64_t lastResorts = 0;
+  while (decimator.step()) {
+    const ViewMesh after = decimator.mesh();
+    const Collapse& made = decimator.log().back();
+    if (decimator.statistics().straightStretchSearches > lastResorts) {
+      lastResorts = decimator.statistics().straightStretchSearches;
+      CHECK(stuck(before));
+    }
+    // The rule depends on the mesh alone: a decimator made from the mesh
+    // before makes the same collapse (after a last resort, the next
+    // collapse is an ordinary one again wherever one is valid).
+    FormulaErrors freshErrors(formula);
+    EdgeCollapseDecimator fresh(before, DecimationErrors{nullptr, &freshErrors}, options);
+    const std::optional<Collapse> next = fresh.peekNextCollapse();
+    REQUIRE(next);
+    CHECK(next->placement == made.placement);
+    CHECK(next->removed == made.removed);
+    CHECK(next->cost == made.cost);
+    // Every collapse covers a part of what the mesh covered before, inside the region.
+    CHECK(area(after) <= area(before) + 1e-12);
+    for (const Triangle& t : after.triangles()) {
+      const glm::dvec2 a = positions[size_t(t[0])], b = positions[size_t(t[1])], c = positions[size_t(t[2])];
+      CHECK(region.containsTriangle(a, b, c));
+      for (const glm::dvec2& corner : {a, b, c}) {
+        const glm::dvec2 point = corner + 1e-3 * ((a + b + c) / 3.0 - corner);
+        CHECK(before.contains(before.locate(point), point));
+      }
+    }
+    before = after;
+  }
+  // Without the last resort the ring stops at 26 references (here 15).
+  CHECK(lastResorts > 0);
+  CHECK(decimator.vertexCount() < 26);
+}
+
 namespace {
 
 // Two 4 x 3 m rooms joined by a doorway, sampled every 0.3 m with a little

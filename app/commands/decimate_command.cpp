@@ -80,6 +80,10 @@ void registerDecimateCommand(CLI::App& app) {
                 "stale heap entries skipped %llu\n",
                 run.collapses, run.collapseSeconds, run.costingSeconds, (unsigned long long)statistics.errorsComputed,
                 (unsigned long long)statistics.cacheHits, (unsigned long long)statistics.staleEntriesSkipped);
+    if (statistics.straightStretchSearches > 0) {
+      std::printf("%llu of them took a reference off a straight stretch of the boundary, where no other was valid\n",
+                  (unsigned long long)statistics.straightStretchSearches);
+    }
     const RefinementResult& refinement = run.refinement;
     if (refinement.radius > 0.0) {
       std::printf(

@@ -32,13 +32,18 @@
 //     unless asked otherwise; the threshold applies to that mean.
 //
 // A collapse is valid only if the result is a manifold planar
-// triangulation covering the same region:
+// triangulation covering the same region (or, where the boundary may
+// shrink, a part of it):
 //   - link condition: v1 and v2 share exactly the neighbours opposite their edge;
 //   - two boundary vertices may only collapse along a boundary edge;
 //   - every new triangle is counter-clockwise (exact predicate, never flat);
-//   - the boundary never moves: a boundary vertex may be removed only where
-//     it lies on the straight segment between its boundary neighbours, and p
-//     must lie on that segment (hull corners stay).
+//   - fixed boundary (the centroid cost, or asked for): the boundary never
+//     moves: a boundary vertex may be removed only where it lies on the
+//     straight segment between its boundary neighbours, and p must lie on
+//     that segment (hull corners stay);
+//   - shrinking boundary (the served-sample cost): the new triangles lie
+//     inside the removed ones; a reference may leave a straight stretch
+//     of the boundary only once no other collapse is valid.
 // Errors are cached (triangles by sorted vertex triple, served samples by
 // triangle and sample). Results do not depend on the thread count: only
 // the error batches run in parallel.
@@ -130,6 +135,10 @@ struct DecimationStatistics {
   uint64_t staleEntriesSkipped = 0;
   uint64_t edgesCosted = 0;
   uint64_t collapseChecksFailed = 0;  // popped entries whose cost had changed
+  // Last-resort searches that found a collapse taking a reference off a
+  // straight stretch of the boundary (see lastResort); in a run of step()
+  // each is one such collapse.
+  uint64_t straightStretchSearches = 0;
 };
 
 class EdgeCollapseDecimator {
@@ -154,7 +163,9 @@ public:
   // After stopping at the threshold: the lowest error of a collapse it
   // refused (+inf if none was refused).
   double lowestRefusedError() const;
-  // Whether collapsing the edge (first, second) into placement is valid now.
+  // Whether collapsing the edge (first, second) into placement is valid now,
+  // leaving aside the last resort (a reference off a straight stretch of the
+  // boundary, valid only where nothing else is: see lastResort).
   bool isValidCollapse(int first, int second, int placement) const;
   // That collapse with its cost and error as the decimator would rank it
   // (not performed), or nothing if it is invalid or over the threshold.
@@ -220,11 +231,12 @@ private:
   std::vector<int> edgeTriangles(int a, int b) const;
   std::vector<int> boundaryNeighbours(int vertex) const;
   bool onOpenSegment(int sample, int from, int to) const;
-  bool simulate(int a, int b, int placement, PlacementKind kind, Plan& plan) const;
+  // straightStretches: see staysInside.
+  bool simulate(int a, int b, int placement, PlacementKind kind, Plan& plan, bool straightStretches = false) const;
   bool boundaryMayShrink() const;
   bool keepsFixedBoundary(int a, int b, int placement, const std::vector<int>& boundaryA,
                           const std::vector<int>& boundaryB) const;
-  bool staysInside(const Plan& plan) const;
+  bool staysInside(int a, int b, const Plan& plan, bool straightStretches) const;
   bool keepsEveryVertex(int a, int b, const Plan& plan) const;
   const Triangle& servingTriangle(const Plan& plan, size_t i) const;
   ServingRank servingRank(const Triangle& triangle, int sample) const;
@@ -238,7 +250,13 @@ private:
   SampleReconstruction servedRequest(const Plan& plan, size_t i) const;
   std::vector<SampleReconstruction> pricedRequests(const Plan& plan) const;
   std::vector<SampleReconstruction> servedRequests(const Plan& plan) const;
+  // Prices every candidate of each edge and commits each edge's state.
   void costEdges(const std::vector<Edge>& edges, ProgressReporter* progress = nullptr);
+  // Each edge's state (its cheapest valid candidate), not committed.
+  std::vector<EdgeState> priceEdges(const std::vector<Edge>& edges, bool straightStretches,
+                                    ProgressReporter* progress = nullptr);
+  // Makes state the edge's own, with a heap entry if it has a cost.
+  void commit(const Edge& edge, EdgeState state);
   void ensureErrors(const std::vector<Triangle>& triangles, ProgressReporter* progress = nullptr);
   void ensureSampleErrors(const std::vector<SampleReconstruction>& requests, ProgressReporter* progress = nullptr);
   double sampleError(const Triangle& triangle, int sample) const;
@@ -247,6 +265,8 @@ private:
   std::pair<double, double> evaluate(const Plan& plan);
   void serveInitialSamples(const ViewMesh& mesh, ProgressReporter* progress);
   const HeapEntry* peekValid();
+  const HeapEntry* lastResort();
+  std::vector<Edge> liveEdges() const;
   void apply(const Edge& edge, const EdgeState& state);
 
   std::vector<glm::dvec2> positions_;

@@ -480,6 +480,21 @@ TEST_CASE(
   // Without the last resort the ring stops at 26 references (here 15).
   CHECK(lastResorts > 0);
   CHECK(decimator.vertexCount() < 26);
+
+  // Under a threshold that the last resorts' collapses cross (6.4 here:
+  // 28 references before any, 16 after ten) the decimator stops where one
+  // made afresh from its final mesh stops too: a last resort's refusals
+  // must not stand for ordinary ones and stop a later search early.
+  options.targetSamples = 0;
+  options.maxError = 6.4;
+  EdgeCollapseDecimator thresholded(dense, DecimationErrors{nullptr, &errors}, options);
+  while (thresholded.step()) {
+  }
+  CHECK(thresholded.stopReason() == StopReason::MaxError);
+  CHECK(thresholded.statistics().straightStretchSearches > 0);
+  FormulaErrors finalErrors(formula);
+  EdgeCollapseDecimator afresh(thresholded.mesh(), DecimationErrors{nullptr, &finalErrors}, options);
+  CHECK_FALSE(afresh.peekNextCollapse());
 }
 
 namespace {

@@ -45,6 +45,19 @@ private:
   Formula formula_;
 };
 
+// Errors that grow with the distance from each of the three references to
+// the destination, and jump where a wall stands between them.
+FormulaErrors::Formula distanceAndSightErrors(const std::vector<glm::dvec2>& positions, const WalkableRegion& region) {
+  return [&positions, &region](const Triangle& t, int destination) {
+    double error = 0.0;
+    for (int v : t) {
+      const glm::dvec2 a = positions[size_t(v)], b = positions[size_t(destination)];
+      error += glm::length(a - b) + (region.lineOfSight(a, b) ? 0.0 : 10.0);
+    }
+    return error;
+  };
+}
+
 // Sample x * rows + y at (x, y), 1 m apart.
 std::vector<glm::dvec2> grid(int columns, int rows) {
   std::vector<glm::dvec2> points;
@@ -351,14 +364,7 @@ TEST_CASE("decimation serves samples outside the mesh as eval does: the nearest 
       if (region.contains({x, y})) positions.push_back(glm::dvec2(x, y) + jitter);
     }
   }
-  const FormulaErrors::Formula formula = [&](const Triangle& t, int destination) {
-    double error = 0.0;
-    for (int v : t) {
-      const glm::dvec2 a = positions[size_t(v)], b = positions[size_t(destination)];
-      error += glm::length(a - b) + (region.lineOfSight(a, b) ? 0.0 : 10.0);
-    }
-    return error;
-  };
+  const FormulaErrors::Formula formula = distanceAndSightErrors(positions, region);
   FormulaErrors errors(formula);
   DecimationOptions options;
   options.maxError = 0.0;
@@ -404,14 +410,7 @@ TEST_CASE(
   auto sampleAt = [&](double x, double y) {
     return int(std::find(positions.begin(), positions.end(), glm::dvec2(x, y)) - positions.begin());
   };
-  const FormulaErrors::Formula formula = [&](const Triangle& t, int destination) {
-    double error = 0.0;
-    for (int v : t) {
-      const glm::dvec2 a = positions[size_t(v)], b = positions[size_t(destination)];
-      error += glm::length(a - b) + (region.lineOfSight(a, b) ? 0.0 : 10.0);
-    }
-    return error;
-  };
+  const FormulaErrors::Formula formula = distanceAndSightErrors(positions, region);
   FormulaErrors errors(formula);
   DecimationOptions options;
   options.maxError = 0.0;
@@ -518,14 +517,7 @@ struct TwoRooms {
         if (region.contains({x, y})) positions.push_back(glm::dvec2(x, y) + jitter);
       }
     }
-    formula = [this](const Triangle& t, int destination) {
-      double error = 0.0;
-      for (int v : t) {
-        const glm::dvec2 a = positions[size_t(v)], b = positions[size_t(destination)];
-        error += glm::length(a - b) + (region.lineOfSight(a, b) ? 0.0 : 10.0);
-      }
-      return error;
-    };
+    formula = distanceAndSightErrors(positions, region);
   }
   ViewMesh dense() const { return ViewMesh::delaunay(positions, {}, "two rooms", &region); }
 };

@@ -50,6 +50,44 @@ TEST_CASE("uniform on a lattice clipped to an L-shaped region: a coarser sub-lat
   CHECK(grid == expected);
 }
 
+TEST_CASE("uniform on a lattice clipped to a ring corridor: the nearest sub-lattice that keeps a triangle inside") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory.path(), 11, 6, 16, 0);
+  // Keep the lattice's outer ring (one sample wide) and walk only there: a
+  // corridor round a block, as a level's loop of corridors. Every triangle
+  // of a coarser sub-lattice spans the block; only three neighbours round
+  // a corner make one that stays in the corridor.
+  Manifest manifest = Dataset::open(directory.path()).manifest();
+  std::erase_if(manifest.samples,
+                [](const ViewRecord& s) { return s.path > 0 && s.path < 10 && s.step > 0 && s.step < 5; });
+  for (size_t i = 0; i < manifest.samples.size(); ++i) manifest.samples[i].id = int(i);
+  glm::dvec2 lower(1e9), upper(-1e9);
+  for (const ViewRecord& s : manifest.samples)
+    lower = glm::min(lower, glm::dvec2(s.position)), upper = glm::max(upper, glm::dvec2(s.position));
+  const double spacing = (upper.x - lower.x) / 10.0, margin = 0.5 * spacing, inset = 0.6 * spacing;
+  RegionPolygon ring;
+  ring.outer = {{lower.x - margin, lower.y - margin},
+                {upper.x + margin, lower.y - margin},
+                {upper.x + margin, upper.y + margin},
+                {lower.x - margin, upper.y + margin}};
+  ring.holes = {{{lower.x + inset, lower.y + inset},
+                 {lower.x + inset, upper.y - inset},
+                 {upper.x - inset, upper.y - inset},
+                 {upper.x - inset, lower.y + inset}}};
+  manifest.walkable = WalkableRegion({ring}, "ring");
+  writeManifest(directory.path(), manifest);
+  const Dataset dataset = Dataset::open(directory.path());
+  REQUIRE(dataset.sampleCount() == 30);
+  for (const int count : {4, 8, 12}) {
+    CAPTURE(count);
+    const std::vector<int> selection = uniformSelection(dataset, count);
+    // Evaluable: its mesh keeps a triangle (no sub-lattice near these
+    // counts has one; before, the baseline's mesh failed to build).
+    CHECK(datasetMesh(dataset, selection, "uniform baseline").triangleCount() > 0);
+    CHECK(uniformSelection(dataset, count) == selection);
+  }
+}
+
 TEST_CASE("uniform without paths: a square lattice snapped to irregular samples, near the count, corners included") {
   // A 10 x 5 m area sampled irregularly: a jittered 0.5 m grid with every
   // seventh position missing (an imported capture has no paths).

@@ -48,34 +48,50 @@ namespace {
 // Every sx-th column and sy-th row of a clipped lattice, from offsets
 // (ox, oy): of all strides with a spacing ratio up to 2 and all offsets,
 // the one scoring lowest on three times the relative count mismatch plus
-// the log of the stride ratio (ties: smaller strides, then offsets).
-std::vector<int> subLatticeSelection(const std::map<std::pair<int, int>, int>& grid, int count) {
+// the log of the stride ratio (ties: smaller strides, then offsets) whose
+// triangulation keeps a triangle inside the region. In a level of
+// corridors a coarse sub-lattice can have none (every triangle crosses a
+// wall), and a baseline without a triangle serves no probe; if no
+// sub-lattice has one, the lowest score (the caller reports the region).
+std::vector<int> subLatticeSelection(const std::map<std::pair<int, int>, int>& grid, int count,
+                                     const std::vector<glm::dvec2>& positions, const WalkableRegion& region) {
   int columns = 0, rows = 0;
   for (const auto& [cell, sample] : grid) columns = std::max(columns, cell.first + 1), rows = std::max(rows, cell.second + 1);
-  std::vector<int> best;
-  double bestScore = std::numeric_limits<double>::max();
-  for (int sx = 1; sx <= columns; ++sx) {
-    for (int sy = 1; sy <= rows; ++sy) {
-      // A stride pair keeps about one sample in sx * sy; far from count, no offset helps.
-      const double kept = double(grid.size()) / double(sx * sy);
-      if (sx > 2 * sy || sy > 2 * sx || kept > 3.0 * count || 3.0 * kept < count) continue;
-      for (int ox = 0; ox < sx; ++ox) {
-        for (int oy = 0; oy < sy; ++oy) {
-          int n = 0;
-          for (const auto& [cell, sample] : grid) n += cell.first % sx == ox && cell.second % sy == oy;
-          const double score = 3.0 * std::abs(double(n - count)) / double(count) + std::abs(std::log(double(sx) / sy));
-          if (n < 3 || score >= bestScore) continue;
-          bestScore = score;
-          best.clear();
-          for (const auto& [cell, sample] : grid) {
-            if (cell.first % sx == ox && cell.second % sy == oy) best.push_back(sample);
+  std::vector<int> best, lowest;  // the best usable one; the lowest score of those without a triangle
+  double bestUsableScore = std::numeric_limits<double>::max(), bestScore = bestUsableScore;
+  // A stride pair keeps about one sample in sx * sy; far from count no
+  // offset helps, so those are tried only if none near it keeps a triangle.
+  for (const bool nearCount : {true, false}) {
+    for (int sx = 1; sx <= columns; ++sx) {
+      for (int sy = 1; sy <= rows; ++sy) {
+        const double kept = double(grid.size()) / double(sx * sy);
+        if (sx > 2 * sy || sy > 2 * sx || (nearCount && (kept > 3.0 * count || 3.0 * kept < count))) continue;
+        for (int ox = 0; ox < sx; ++ox) {
+          for (int oy = 0; oy < sy; ++oy) {
+            int n = 0;
+            for (const auto& [cell, sample] : grid) n += cell.first % sx == ox && cell.second % sy == oy;
+            const double score =
+                3.0 * std::abs(double(n - count)) / double(count) + std::abs(std::log(double(sx) / sy));
+            if (n < 3 || score >= bestUsableScore) continue;
+            std::vector<int> candidate;
+            for (const auto& [cell, sample] : grid) {
+              if (cell.first % sx == ox && cell.second % sy == oy) candidate.push_back(sample);
+            }
+            std::sort(candidate.begin(), candidate.end());
+            if (ViewMesh::tryDelaunay(positions, candidate, &region)) {
+              bestUsableScore = score;
+              best = std::move(candidate);
+            } else if (score < bestScore) {
+              bestScore = score;
+              lowest = std::move(candidate);
+            }
           }
         }
       }
     }
+    if (!best.empty()) break;
   }
-  std::sort(best.begin(), best.end());
-  return best;
+  return best.empty() ? lowest : best;
 }
 
 }  // namespace
@@ -93,7 +109,9 @@ std::vector<int> uniformSelection(const Dataset& dataset, int count) {
     steps = std::max(steps, sample.step + 1);
   }
   if (!onPaths || int(grid.size()) != dataset.sampleCount()) return latticeSelection(samplePositions(dataset), count);
-  if (int(grid.size()) != paths * steps || paths < 2 || steps < 2) return subLatticeSelection(grid, count);
+  if (int(grid.size()) != paths * steps || paths < 2 || steps < 2) {
+    return subLatticeSelection(grid, count, samplePositions(dataset), dataset.walkableRegion());
+  }
   // Spacing of the dense grid along both axes, from the first path and step.
   const glm::dvec2 origin(dataset.sample(grid.at({0, 0})).position);
   const double pathSpan = glm::length(glm::dvec2(dataset.sample(grid.at({paths - 1, 0})).position) - origin);

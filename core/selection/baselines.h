@@ -25,7 +25,8 @@ namespace triwalk {
 // or fewer), corners included. With distinct paths and steps that do not
 // fill their grid (a lattice clipped to a region): every sx-th column and
 // sy-th row from an offset, the strides and offset whose count comes
-// nearest count with the most even spacing. Otherwise latticeSelection.
+// nearest count with the most even spacing, of those whose triangulation
+// keeps a triangle inside the region. Otherwise latticeSelection.
 std::vector<int> uniformSelection(const Dataset& dataset, int count);
 
 // A regular lattice of square cells over the positions' bounding box,

@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <set>
 #include <tuple>
 
@@ -390,12 +391,14 @@ TEST_CASE("decimation serves samples outside the mesh as eval does: the nearest 
 
 TEST_CASE(
     "where the boundary may shrink, a reference leaves a straight stretch of it only once no other collapse is "
-    "valid, and the covered area only shrinks") {
+    "valid, a ring is cut open only once none of those is, and the covered area only shrinks") {
   // A 10 x 6 m room around a 6 x 2 m block, sampled on a 1 m lattice (as a
   // capture samples a region): a corridor two samples wide all round,
-  // every sample on the boundary, every side a straight row. A ring cannot
-  // be cut, so once its corners are cut off the collapses left are those
-  // that take a reference off a straight side.
+  // every sample on the boundary, every side a straight row. No collapse
+  // cuts a ring, so once its corners are cut off the collapses left are
+  // those that take a reference off a straight side, and once the ring is
+  // as thin as it can be, only a reference removed with its triangles
+  // (cutting the ring open) lets it go on to the target.
   RegionPolygon ring;
   ring.outer = {{0, 0}, {10, 0}, {10, 6}, {0, 6}};
   ring.holes = {{{2, 2}, {2, 4}, {8, 4}, {8, 2}}};
@@ -445,8 +448,34 @@ TEST_CASE(
     }
     return true;
   };
+  // One edge-connected piece, every vertex on the boundary once at most.
+  auto onePieceNoPinch = [&](const ViewMesh& mesh) {
+    std::map<std::pair<int, int>, int> uses;
+    for (const Triangle& t : mesh.triangles()) {
+      for (int e = 0; e < 3; ++e) ++uses[std::minmax(t[size_t(e)], t[size_t((e + 1) % 3)])];
+    }
+    std::map<int, int> boundaryEdges;
+    for (const auto& [edge, count] : uses) {
+      if (count == 1) ++boundaryEdges[edge.first], ++boundaryEdges[edge.second];
+    }
+    const bool noPinch =
+        std::all_of(boundaryEdges.begin(), boundaryEdges.end(), [](const auto& vertex) { return vertex.second <= 2; });
+    std::vector<char> reached(mesh.triangles().size(), 0);
+    std::vector<size_t> stack = {0};
+    reached[0] = 1;
+    while (!stack.empty()) {
+      const Triangle t = mesh.triangles()[stack.back()];
+      stack.pop_back();
+      for (size_t o = 0; o < reached.size(); ++o) {
+        int shared = 0;
+        for (int v : mesh.triangles()[o]) shared += int(std::find(t.begin(), t.end(), v) != t.end());
+        if (!reached[o] && shared == 2) reached[o] = 1, stack.push_back(o);
+      }
+    }
+    return noPinch && std::all_of(reached.begin(), reached.end(), [](char r) { return r == 1; });
+  };
   ViewMesh before = dense;
-  uint64_t lastResorts = 0;
+  uint64_t lastResorts = 0, removals = 0;
   while (decimator.step()) {
     const ViewMesh after = decimator.mesh();
     const Collapse& made = decimator.log().back();
@@ -454,6 +483,17 @@ TEST_CASE(
       lastResorts = decimator.statistics().straightStretchSearches;
       CHECK(stuck(before));
     }
+    if (made.kind == PlacementKind::Removal) {
+      // Only where no collapse is valid, the straight-stretch ones
+      // included: the first where they ran out, at 15 references.
+      if (removals == 0) CHECK(before.vertices().size() == 15);
+      ++removals;
+      CHECK(decimator.statistics().removals == removals);
+      CHECK(stuck(before));
+      CHECK(made.added.empty());
+      CHECK(made.second == made.placement);
+    }
+    CHECK(onePieceNoPinch(after));
     // The rule depends on the mesh alone: a decimator made from the mesh
     // before makes the same collapse (after a last resort, the next
     // collapse is an ordinary one again wherever one is valid).
@@ -476,9 +516,12 @@ TEST_CASE(
     }
     before = after;
   }
-  // Without the last resort the ring stops at 26 references (here 15).
+  // Without the last resorts the ring stops at 26 references; without
+  // removals at 15.
   CHECK(lastResorts > 0);
-  CHECK(decimator.vertexCount() < 26);
+  CHECK(removals > 0);
+  CHECK(decimator.stopReason() == StopReason::TargetReached);
+  CHECK(decimator.vertexCount() == 8);
 
   // Under a threshold that the last resorts' collapses cross (6.4 here:
   // 28 references before any, 16 after ten) the decimator stops where one
@@ -494,6 +537,44 @@ TEST_CASE(
   FormulaErrors finalErrors(formula);
   EdgeCollapseDecimator afresh(thresholded.mesh(), DecimationErrors{nullptr, &finalErrors}, options);
   CHECK_FALSE(afresh.peekNextCollapse());
+}
+
+TEST_CASE("a reference leaves with its triangles only where the mesh stays one piece and pinches nowhere") {
+  FormulaErrors errors([](const Triangle&, int) { return 1.0; });
+  DecimationOptions options;
+  options.maxError = 0.0;
+  // A corridor one triangle wide: bottom row p0..p3, top row q0..q3.
+  std::vector<glm::dvec2> strip;
+  for (int i = 0; i < 4; ++i) strip.emplace_back(i, 0.0);
+  for (int i = 0; i < 4; ++i) strip.emplace_back(i, 1.0);
+  std::vector<Triangle> zigzag;
+  for (int i = 0; i < 3; ++i) {
+    zigzag.push_back({i, i + 1, 4 + i});
+    zigzag.push_back({i + 1, 5 + i, 4 + i});
+  }
+  const EdgeCollapseDecimator corridor(ViewMesh(strip, zigzag), DecimationErrors{nullptr, &errors}, options);
+  CHECK(corridor.isValidRemoval(0, 1));        // p0 from the corridor's end
+  CHECK_FALSE(corridor.isValidRemoval(5, 4));  // q1 would cut the corridor in two
+  CHECK_FALSE(corridor.isValidRemoval(4, 5));  // q0 would leave p0 without a triangle
+  CHECK_FALSE(corridor.isValidRemoval(0, 2));  // not an edge
+  // w = (0, 0) on the bottom edge, its fan L-A-v-B-R; v = (0, 1) on the
+  // edge of a hole, which an arch of triangles from A over to B closes.
+  // Without v, w would hold two fans (a pinch), though the mesh stays one
+  // piece round the arch.
+  const std::vector<glm::dvec2> arch = {{0, 0},  {-1, 0}, {1, 0},  {-1, 1}, {0, 1}, {1, 1},
+                                        {-2, 1}, {-1, 2}, {-2, 3}, {1, 2},  {2, 3}, {2, 1}};
+  enum { W, L, R, A, V, B, A2, C, P, D, Q, B2 };
+  const std::vector<Triangle> around = {{L, W, A},  {W, V, A},  {W, B, V}, {W, R, B}, {L, A, A2}, {R, B2, B},
+                                        {A2, A, C}, {A2, C, P}, {P, C, D}, {P, D, Q}, {Q, D, B},  {Q, B, B2}};
+  const EdgeCollapseDecimator pinched(ViewMesh(arch, around), DecimationErrors{nullptr, &errors}, options);
+  CHECK_FALSE(pinched.isValidRemoval(V, A));
+  CHECK_FALSE(pinched.isValidRemoval(V, B));
+  CHECK(pinched.isValidRemoval(C, A));         // the arch cut open next to A
+  CHECK_FALSE(pinched.isValidRemoval(C, A2));  // not along the boundary
+  // With the fixed boundary (the paper's rule) nothing leaves.
+  options.fixedBoundary = true;
+  const EdgeCollapseDecimator fixed(ViewMesh(strip, zigzag), DecimationErrors{nullptr, &errors}, options);
+  CHECK_FALSE(fixed.isValidRemoval(0, 1));
 }
 
 namespace {

@@ -84,6 +84,11 @@ void registerDecimateCommand(CLI::App& app) {
       std::printf("%llu of them took a reference off a straight stretch of the boundary, where no other was valid\n",
                   (unsigned long long)statistics.straightStretchSearches);
     }
+    if (statistics.removals > 0) {
+      std::printf(
+          "%llu of them removed a reference with its triangles, where no collapse was valid (a loop cut open)\n",
+          (unsigned long long)statistics.removals);
+    }
     const RefinementResult& refinement = run.refinement;
     if (refinement.radius > 0.0) {
       std::printf(

@@ -44,6 +44,8 @@ const char* placementName(PlacementKind kind) {
     case PlacementKind::Midpoint: return "midpoint";
     case PlacementKind::OneRing: return "one-ring";
     case PlacementKind::Relocation: return "relocation";
+    case PlacementKind::Removal:
+      return "removal";
   }
   return "?";
 }
@@ -310,6 +312,60 @@ bool EdgeCollapseDecimator::keepsEveryVertex(int a, int b, const Plan& plan) con
     }
   }
   return plan.removed.size() < size_t(triangleCount());
+}
+
+// A boundary reference leaves with all its triangles, none added: the
+// covered area loses its fan, and the samples the fan served go to the
+// best-ranked triangles left. Valid where every other vertex of the fan
+// keeps a triangle and stays on the boundary once (no pinch), and the mesh
+// falls into no more pieces than it had: on a ring of triangles (a loop of
+// corridors) this cuts the ring open, after which its ends can collapse.
+bool EdgeCollapseDecimator::simulateRemoval(int leaving, int staying, Plan& plan) const {
+  if (!boundaryMayShrink() || edgeTriangles(leaving, staying).size() != 1) return false;
+  if (boundaryNeighbours(leaving).size() != 2) return false;
+  plan.placement = staying;
+  plan.kind = PlacementKind::Removal;
+  plan.removed = incident_[size_t(leaving)];
+  plan.added.clear();
+  std::sort(plan.removed.begin(), plan.removed.end());
+  if (plan.removed.size() >= size_t(triangleCount())) return false;
+  for (int w : neighboursOf(leaving)) {
+    std::map<int, int> edgeUses;  // of w's edges, among its triangles left
+    for (int t : incident_[size_t(w)]) {
+      if (std::binary_search(plan.removed.begin(), plan.removed.end(), t)) continue;
+      for (int x : triangles_[size_t(t)]) {
+        if (x != w) ++edgeUses[x];
+      }
+    }
+    const auto boundaryEdges =
+        std::count_if(edgeUses.begin(), edgeUses.end(), [](const auto& use) { return use.second == 1; });
+    if (edgeUses.empty() || boundaryEdges != 2) return false;
+  }
+  if (piecesWithout(plan.removed) > piecesWithout({})) return false;
+  if (options_.cost == CollapseCost::ServedSamples) assignServedSamples(leaving, staying, plan);
+  return true;
+}
+
+int EdgeCollapseDecimator::piecesWithout(const std::vector<int>& removed) const {
+  std::vector<char> seen(triangles_.size(), 0);
+  for (int t : removed) seen[size_t(t)] = 1;
+  int pieces = 0;
+  for (size_t start = 0; start < triangles_.size(); ++start) {
+    if (!alive_[start] || seen[start]) continue;
+    ++pieces;
+    std::vector<int> stack = {int(start)};
+    seen[start] = 1;
+    while (!stack.empty()) {
+      const Triangle tri = triangles_[size_t(stack.back())];
+      stack.pop_back();
+      for (int e = 0; e < 3; ++e) {
+        for (int t : edgeTriangles(tri[size_t(e)], tri[size_t((e + 1) % 3)])) {
+          if (!seen[size_t(t)]) seen[size_t(t)] = 1, stack.push_back(t);
+        }
+      }
+    }
+  }
+  return pieces;
 }
 
 // The samples the changed triangles will serve, and where each goes.
@@ -616,7 +672,7 @@ std::pair<double, double> EdgeCollapseDecimator::evaluate(const Plan& plan) {
 // triangle errors they need are computed together (in parallel), then each
 // edge takes its cheapest valid candidate (ties: candidate order).
 void EdgeCollapseDecimator::costEdges(const std::vector<Edge>& edges, ProgressReporter* progress) {
-  std::vector<EdgeState> states = priceEdges(edges, false, progress);
+  std::vector<EdgeState> states = priceEdges(edges, Resort::None, progress);
   for (size_t i = 0; i < edges.size(); ++i) commit(edges[i], std::move(states[i]));
 }
 
@@ -628,7 +684,7 @@ void EdgeCollapseDecimator::commit(const Edge& edge, EdgeState state) {
 }
 
 std::vector<EdgeCollapseDecimator::EdgeState> EdgeCollapseDecimator::priceEdges(const std::vector<Edge>& edges,
-                                                                                bool straightStretches,
+                                                                                Resort resort,
                                                                                 ProgressReporter* progress) {
   struct Candidate {
     size_t edge;
@@ -640,9 +696,14 @@ std::vector<EdgeCollapseDecimator::EdgeState> EdgeCollapseDecimator::priceEdges(
   std::vector<SampleReconstruction> neededSamples;
   for (size_t i = 0; i < edges.size(); ++i) {
     const auto [a, b] = edges[i];
-    for (const auto& [placement, kind] : candidates(a, b, states[i])) {
+    std::vector<std::pair<int, PlacementKind>> tries = {{b, PlacementKind::Removal}, {a, PlacementKind::Removal}};
+    if (resort != Resort::Removals) tries = candidates(a, b, states[i]);
+    for (const auto& [placement, kind] : tries) {
       Plan plan;
-      if (!simulate(a, b, placement, kind, plan, straightStretches)) continue;
+      const bool valid = kind == PlacementKind::Removal
+                             ? simulateRemoval(placement == a ? b : a, placement, plan)
+                             : simulate(a, b, placement, kind, plan, resort == Resort::StraightStretches);
+      if (!valid) continue;
       if (options_.cost == CollapseCost::Centroid) {
         needed.insert(needed.end(), plan.added.begin(), plan.added.end());
       } else {
@@ -707,25 +768,38 @@ const EdgeCollapseDecimator::HeapEntry* EdgeCollapseDecimator::peekValid() {
 // target). Only as a last resort, because taking these whenever they are
 // cheapest changed selections that never got stuck, for the worse on the
 // built-in scene (docs/RESULTS.md, "References off straight stretches of
-// the boundary"). The rule depends on the mesh alone: every edge is
-// priced with it and only the cheapest keeps that price (the others'
-// refusals would count as ordinary ones and stop a later search); if it
-// is asked for again, its entry fails the check at the top (an ordinary
-// price) and this runs again on the same mesh.
+// the boundary"). If none of those is valid (none refused either), a
+// boundary reference may leave with all its triangles (simulateRemoval):
+// no collapse ever cuts a ring of triangles, so a loop of corridors
+// otherwise stops where its ring is as thin as it can be (oacmpdm1 at 66
+// samples). The rules depend on the mesh alone: every edge is priced with
+// them and only the cheapest keeps that price (the others' refusals would
+// count as ordinary ones and stop a later search); if it is asked for
+// again, its entry fails the check at the top (an ordinary price) and
+// this runs again on the same mesh.
 const EdgeCollapseDecimator::HeapEntry* EdgeCollapseDecimator::lastResort() {
   if (!boundaryMayShrink() || std::isfinite(lowestRefusedError())) return nullptr;
   const std::vector<Edge> edges = liveEdges();
-  std::vector<EdgeState> states = priceEdges(edges, true);
+  if (const HeapEntry* stretch = commitCheapest(edges, priceEdges(edges, Resort::StraightStretches))) {
+    ++statistics_.straightStretchSearches;
+    return stretch;
+  }
+  if (std::isfinite(lowestRefusedError())) return nullptr;  // over the threshold: the stop reports it
+  const HeapEntry* removal = commitCheapest(edges, priceEdges(edges, Resort::Removals));
+  if (removal) ++statistics_.removals;
+  return removal;
+}
+
+const EdgeCollapseDecimator::HeapEntry* EdgeCollapseDecimator::commitCheapest(const std::vector<Edge>& edges,
+                                                                              std::vector<EdgeState> states) {
   size_t best = edges.size();
   for (size_t i = 0; i < edges.size(); ++i) {
     if (std::isfinite(states[i].cost) && (best == edges.size() || states[i].cost < states[best].cost)) best = i;
   }
   if (best == edges.size()) {
-    // Over the threshold, if anything: the stop reports it.
     for (size_t i = 0; i < edges.size(); ++i) commit(edges[i], std::move(states[i]));
     return nullptr;
   }
-  ++statistics_.straightStretchSearches;
   commit(edges[best], std::move(states[best]));
   return &heap_.top();
 }
@@ -740,10 +814,17 @@ std::vector<EdgeCollapseDecimator::Edge> EdgeCollapseDecimator::liveEdges() cons
 std::optional<Collapse> EdgeCollapseDecimator::peekNextCollapse() {
   const HeapEntry* top = peekValid();
   if (!top) return std::nullopt;
-  const EdgeState& state = edges_.at({top->first, top->second});
+  return logEntry({top->first, top->second}, edges_.at({top->first, top->second}));
+}
+
+Collapse EdgeCollapseDecimator::logEntry(const Edge& edge, const EdgeState& state) const {
   Collapse collapse;
-  collapse.first = top->first;
-  collapse.second = top->second;
+  collapse.first = edge.first;
+  collapse.second = edge.second;
+  if (state.plan.kind == PlacementKind::Removal) {  // the reference that leaves first
+    collapse.first = edge.first == state.plan.placement ? edge.second : edge.first;
+    collapse.second = state.plan.placement;
+  }
   collapse.placement = state.plan.placement;
   collapse.kind = state.plan.kind;
   collapse.cost = state.cost;
@@ -763,6 +844,12 @@ bool EdgeCollapseDecimator::isValidCollapse(int first, int second, int placement
   if (placement != first && placement != second && isVertex_[size_t(placement)]) return false;
   Plan plan;
   return simulate(first, second, placement, PlacementKind::First, plan);
+}
+
+bool EdgeCollapseDecimator::isValidRemoval(int leaving, int staying) const {
+  if (!isVertex_[size_t(leaving)] || !isVertex_[size_t(staying)]) return false;
+  Plan plan;
+  return simulateRemoval(leaving, staying, plan);
 }
 
 std::optional<Collapse> EdgeCollapseDecimator::evaluateCollapse(int first, int second, int placement) {
@@ -794,16 +881,9 @@ std::optional<Collapse> EdgeCollapseDecimator::evaluateCollapse(int first, int s
 void EdgeCollapseDecimator::apply(const Edge& edge, const EdgeState& state) {
   const auto [a, b] = edge;
   const Plan& plan = state.plan;
-  Collapse record;
-  record.first = a;
-  record.second = b;
-  record.placement = plan.placement;
-  record.kind = plan.kind;
-  record.cost = state.cost;
-  record.error = state.error;
+  log_.push_back(logEntry(edge, state));
   for (int t : plan.removed) {
     alive_[size_t(t)] = 0;
-    record.removed.push_back(canonicalTriangle(triangles_[size_t(t)]));
     for (int v : triangles_[size_t(t)]) {
       auto& list = incident_[size_t(v)];
       list.erase(std::find(list.begin(), list.end(), t));
@@ -815,9 +895,6 @@ void EdgeCollapseDecimator::apply(const Edge& edge, const EdgeState& state) {
     alive_.push_back(1);
     for (int v : t) incident_[size_t(v)].push_back(id);
   }
-  record.added = plan.added;
-  std::sort(record.removed.begin(), record.removed.end());
-  log_.push_back(std::move(record));
 
   // Served samples move to the new triangles; the placement is a reference
   // now. If it was served by a triangle outside the collapse (on a shared
@@ -882,6 +959,9 @@ void EdgeCollapseDecimator::apply(const Edge& edge, const EdgeState& state) {
   std::set<Edge> affected;
   std::vector<int> around = neighboursOf(plan.placement);
   around.push_back(plan.placement);
+  if (plan.kind == PlacementKind::Removal) {  // the fan's outline, not all of it around the placement
+    for (const Triangle& t : log_.back().removed) around.insert(around.end(), t.begin(), t.end());
+  }
   if (placementHome >= 0) gainedSamples.insert(placementHome);
   for (int t : gainedSamples) around.insert(around.end(), triangles_[size_t(t)].begin(), triangles_[size_t(t)].end());
   for (int w : around) {

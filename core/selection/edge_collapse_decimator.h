@@ -43,7 +43,9 @@
 //     that segment (hull corners stay);
 //   - shrinking boundary (the served-sample cost): the new triangles lie
 //     inside the removed ones; a reference may leave a straight stretch
-//     of the boundary only once no other collapse is valid.
+//     of the boundary only once no other collapse is valid, and a
+//     boundary reference may leave with all its triangles (cutting a ring
+//     of them open) only once no such collapse is valid either.
 // Errors are cached (triangles by sorted vertex triple, served samples by
 // triangle and sample). Results do not depend on the thread count: only
 // the error batches run in parallel.
@@ -70,8 +72,11 @@ class ProgressReporter;
 
 // Relocation is not a collapse: the refinement after decimation
 // (core/selection/selection_refinement.h) moved sample `first` to `placement`; the
-// sample count stays and `second` is -1.
-enum class PlacementKind { First, Second, Midpoint, OneRing, Relocation };
+// sample count stays and `second` is -1. Removal: reference `first` left
+// the mesh with all its triangles and none was added (a loop of corridors
+// cut, see lastResort); `second` and `placement` are its neighbour along
+// the boundary edge that stays a reference.
+enum class PlacementKind { First, Second, Midpoint, OneRing, Relocation, Removal };
 const char* placementName(PlacementKind kind);
 
 // One logged collapse (or relocation): replaying removed -> added (forward)
@@ -139,6 +144,9 @@ struct DecimationStatistics {
   // straight stretch of the boundary (see lastResort); in a run of step()
   // each is one such collapse.
   uint64_t straightStretchSearches = 0;
+  // Last-resort searches, after those, that found a reference to remove
+  // with all its triangles (PlacementKind::Removal).
+  uint64_t removals = 0;
 };
 
 class EdgeCollapseDecimator {
@@ -164,9 +172,14 @@ public:
   // refused (+inf if none was refused).
   double lowestRefusedError() const;
   // Whether collapsing the edge (first, second) into placement is valid now,
-  // leaving aside the last resort (a reference off a straight stretch of the
-  // boundary, valid only where nothing else is: see lastResort).
+  // leaving aside the last resorts (a reference off a straight stretch of
+  // the boundary, or removed with its triangles, valid only where nothing
+  // else is: see lastResort).
   bool isValidCollapse(int first, int second, int placement) const;
+  // Whether reference `leaving` may leave with all its triangles now,
+  // keeping its boundary neighbour `staying` (PlacementKind::Removal; made
+  // only as the last of the last resorts).
+  bool isValidRemoval(int leaving, int staying) const;
   // That collapse with its cost and error as the decimator would rank it
   // (not performed), or nothing if it is invalid or over the threshold.
   std::optional<Collapse> evaluateCollapse(int first, int second, int placement);
@@ -233,6 +246,11 @@ private:
   bool onOpenSegment(int sample, int from, int to) const;
   // straightStretches: see staysInside.
   bool simulate(int a, int b, int placement, PlacementKind kind, Plan& plan, bool straightStretches = false) const;
+  // The removal of boundary reference `leaving` with its triangles, keeping
+  // its boundary neighbour `staying` (the plan's placement).
+  bool simulateRemoval(int leaving, int staying, Plan& plan) const;
+  // Edge-connected pieces of the mesh without the given triangles (ids, sorted).
+  int piecesWithout(const std::vector<int>& removed) const;
   bool boundaryMayShrink() const;
   bool keepsFixedBoundary(int a, int b, int placement, const std::vector<int>& boundaryA,
                           const std::vector<int>& boundaryB) const;
@@ -252,9 +270,15 @@ private:
   std::vector<SampleReconstruction> servedRequests(const Plan& plan) const;
   // Prices every candidate of each edge and commits each edge's state.
   void costEdges(const std::vector<Edge>& edges, ProgressReporter* progress = nullptr);
+  // What a pricing may try besides the ordinary collapses: nothing, a
+  // reference off a straight stretch of the boundary, or only removals.
+  enum class Resort { None, StraightStretches, Removals };
   // Each edge's state (its cheapest valid candidate), not committed.
-  std::vector<EdgeState> priceEdges(const std::vector<Edge>& edges, bool straightStretches,
+  std::vector<EdgeState> priceEdges(const std::vector<Edge>& edges, Resort resort,
                                     ProgressReporter* progress = nullptr);
+  // Of priced states, the cheapest valid one committed (returned), or, if
+  // none is valid, all committed (their refusals count) and none returned.
+  const HeapEntry* commitCheapest(const std::vector<Edge>& edges, std::vector<EdgeState> states);
   // Makes state the edge's own, with a heap entry if it has a cost.
   void commit(const Edge& edge, EdgeState state);
   void ensureErrors(const std::vector<Triangle>& triangles, ProgressReporter* progress = nullptr);
@@ -267,6 +291,8 @@ private:
   const HeapEntry* peekValid();
   const HeapEntry* lastResort();
   std::vector<Edge> liveEdges() const;
+  // The log's entry for making an edge's state.
+  Collapse logEntry(const Edge& edge, const EdgeState& state) const;
   void apply(const Edge& edge, const EdgeState& state);
 
   std::vector<glm::dvec2> positions_;

@@ -13,11 +13,10 @@ namespace triwalk {
 
 namespace {
 
-const std::map<std::string, PlacementKind> kPlacementKinds = {{"first", PlacementKind::First},
-                                                             {"second", PlacementKind::Second},
-                                                             {"midpoint", PlacementKind::Midpoint},
-                                                             {"one-ring", PlacementKind::OneRing},
-                                                             {"relocation", PlacementKind::Relocation}};
+const std::map<std::string, PlacementKind> kPlacementKinds = {
+    {"first", PlacementKind::First},           {"second", PlacementKind::Second},
+    {"midpoint", PlacementKind::Midpoint},     {"one-ring", PlacementKind::OneRing},
+    {"relocation", PlacementKind::Relocation}, {"removal", PlacementKind::Removal}};
 
 nlohmann::json trianglesToJson(const std::vector<Triangle>& triangles, const Dataset& dataset) {
   nlohmann::json array = nlohmann::json::array();

@@ -696,8 +696,10 @@ std::vector<EdgeCollapseDecimator::EdgeState> EdgeCollapseDecimator::priceEdges(
   std::vector<SampleReconstruction> neededSamples;
   for (size_t i = 0; i < edges.size(); ++i) {
     const auto [a, b] = edges[i];
-    std::vector<std::pair<int, PlacementKind>> tries = {{b, PlacementKind::Removal}, {a, PlacementKind::Removal}};
-    if (resort != Resort::Removals) tries = candidates(a, b, states[i]);
+    const std::vector<std::pair<int, PlacementKind>> tries =
+        resort == Resort::Removals
+            ? std::vector<std::pair<int, PlacementKind>>{{b, PlacementKind::Removal}, {a, PlacementKind::Removal}}
+            : candidates(a, b, states[i]);
     for (const auto& [placement, kind] : tries) {
       Plan plan;
       const bool valid = kind == PlacementKind::Removal

@@ -65,7 +65,8 @@ std::vector<int> subLatticeSelection(const std::map<std::pair<int, int>, int>& g
     for (int sx = 1; sx <= columns; ++sx) {
       for (int sy = 1; sy <= rows; ++sy) {
         const double kept = double(grid.size()) / double(sx * sy);
-        if (sx > 2 * sy || sy > 2 * sx || (nearCount && (kept > 3.0 * count || 3.0 * kept < count))) continue;
+        const bool near = kept <= 3.0 * count && 3.0 * kept >= count;
+        if (sx > 2 * sy || sy > 2 * sx || near != nearCount) continue;
         for (int ox = 0; ox < sx; ++ox) {
           for (int oy = 0; oy < sy; ++oy) {
             int n = 0;

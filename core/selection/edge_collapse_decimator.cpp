@@ -320,7 +320,7 @@ bool EdgeCollapseDecimator::keepsEveryVertex(int a, int b, const Plan& plan) con
 // keeps a triangle and stays on the boundary once (no pinch), and the mesh
 // falls into no more pieces than it had: on a ring of triangles (a loop of
 // corridors) this cuts the ring open, after which its ends can collapse.
-bool EdgeCollapseDecimator::simulateRemoval(int leaving, int staying, Plan& plan) const {
+bool EdgeCollapseDecimator::simulateRemoval(int leaving, int staying, int pieces, Plan& plan) const {
   if (!boundaryMayShrink() || edgeTriangles(leaving, staying).size() != 1) return false;
   if (boundaryNeighbours(leaving).size() != 2) return false;
   plan.placement = staying;
@@ -341,7 +341,7 @@ bool EdgeCollapseDecimator::simulateRemoval(int leaving, int staying, Plan& plan
         std::count_if(edgeUses.begin(), edgeUses.end(), [](const auto& use) { return use.second == 1; });
     if (edgeUses.empty() || boundaryEdges != 2) return false;
   }
-  if (piecesWithout(plan.removed) > piecesWithout({})) return false;
+  if (piecesWithout(plan.removed) > pieces) return false;
   if (options_.cost == CollapseCost::ServedSamples) assignServedSamples(leaving, staying, plan);
   return true;
 }
@@ -694,6 +694,7 @@ std::vector<EdgeCollapseDecimator::EdgeState> EdgeCollapseDecimator::priceEdges(
   std::vector<EdgeState> states(edges.size());
   std::vector<Triangle> needed;
   std::vector<SampleReconstruction> neededSamples;
+  const int pieces = resort == Resort::Removals ? piecesWithout({}) : 0;
   for (size_t i = 0; i < edges.size(); ++i) {
     const auto [a, b] = edges[i];
     const std::vector<std::pair<int, PlacementKind>> tries =
@@ -703,7 +704,7 @@ std::vector<EdgeCollapseDecimator::EdgeState> EdgeCollapseDecimator::priceEdges(
     for (const auto& [placement, kind] : tries) {
       Plan plan;
       const bool valid = kind == PlacementKind::Removal
-                             ? simulateRemoval(placement == a ? b : a, placement, plan)
+                             ? simulateRemoval(placement == a ? b : a, placement, pieces, plan)
                              : simulate(a, b, placement, kind, plan, resort == Resort::StraightStretches);
       if (!valid) continue;
       if (options_.cost == CollapseCost::Centroid) {
@@ -851,7 +852,7 @@ bool EdgeCollapseDecimator::isValidCollapse(int first, int second, int placement
 bool EdgeCollapseDecimator::isValidRemoval(int leaving, int staying) const {
   if (!isVertex_[size_t(leaving)] || !isVertex_[size_t(staying)]) return false;
   Plan plan;
-  return simulateRemoval(leaving, staying, plan);
+  return simulateRemoval(leaving, staying, piecesWithout({}), plan);
 }
 
 std::optional<Collapse> EdgeCollapseDecimator::evaluateCollapse(int first, int second, int placement) {

@@ -247,8 +247,9 @@ private:
   // straightStretches: see staysInside.
   bool simulate(int a, int b, int placement, PlacementKind kind, Plan& plan, bool straightStretches = false) const;
   // The removal of boundary reference `leaving` with its triangles, keeping
-  // its boundary neighbour `staying` (the plan's placement).
-  bool simulateRemoval(int leaving, int staying, Plan& plan) const;
+  // its boundary neighbour `staying` (the plan's placement); `pieces` is
+  // piecesWithout({}), taken once for all the candidates on one mesh.
+  bool simulateRemoval(int leaving, int staying, int pieces, Plan& plan) const;
   // Edge-connected pieces of the mesh without the given triangles (ids, sorted).
   int piecesWithout(const std::vector<int>& removed) const;
   bool boundaryMayShrink() const;

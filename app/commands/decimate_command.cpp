@@ -4,7 +4,9 @@
 #include "app/commands/commands.h"
 #include "app/setup/decimation_options.h"
 #include "app/setup/option_checks.h"
+#include "app/setup/walkthrough_setup.h"
 #include "core/selection/reference_selection.h"
+#include "core/selection/selection.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 
@@ -76,10 +78,16 @@ void registerDecimateCommand(CLI::App& app) {
       std::printf(run.stopReason == StopReason::MaxError ? " (lowest error of a refused collapse %.3f)" : " (next cost %.3f)",
                   run.selection.nextCost);
     }
-    std::printf("\n%zu collapses in %.1f s (edge costing %.1f s); errors computed %llu, served from the cache %llu; "
-                "stale heap entries skipped %llu\n",
-                run.collapses, run.collapseSeconds, run.costingSeconds, (unsigned long long)statistics.errorsComputed,
-                (unsigned long long)statistics.cacheHits, (unsigned long long)statistics.staleEntriesSkipped);
+    std::printf("\n");
+    if (const std::string unwalkable = describeUnwalkableSamples(dataset, selectionMesh(run.selection, dataset));
+        !unwalkable.empty()) {
+      std::printf("%s\n", unwalkable.c_str());
+    }
+    std::printf(
+        "%zu collapses in %.1f s (edge costing %.1f s); errors computed %llu, served from the cache %llu; "
+        "stale heap entries skipped %llu\n",
+        run.collapses, run.collapseSeconds, run.costingSeconds, (unsigned long long)statistics.errorsComputed,
+        (unsigned long long)statistics.cacheHits, (unsigned long long)statistics.staleEntriesSkipped);
     if (statistics.straightStretchSearches > 0) {
       std::printf("%llu of them took a reference off a straight stretch of the boundary, where no other was valid\n",
                   (unsigned long long)statistics.straightStretchSearches);

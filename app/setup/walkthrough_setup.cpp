@@ -1,5 +1,6 @@
 #include "app/setup/walkthrough_setup.h"
 
+#include "core/selection/evaluation.h"
 #include "core/selection/selection.h"
 #include "core/support/errors.h"
 
@@ -10,6 +11,17 @@ namespace triwalk {
 ViewMesh walkthroughMesh(const Dataset& dataset, const std::string& selectionPath) {
   if (selectionPath.empty()) return datasetMesh(dataset, {}, dataset.manifestPath().string());
   return selectionMesh(readSelection(selectionPath, dataset), dataset);
+}
+
+std::string describeUnwalkableSamples(const Dataset& dataset, const ViewMesh& mesh) {
+  const UncoveredPositions uncovered = uncoveredPositions(mesh, samplePositions(dataset));
+  if (uncovered.count == 0) return "";
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "%d of %d samples lie outside every view triangle, up to %.2f m from one: a walker there "
+                "sees them synthesized from the best-ranked triangle's references",
+                uncovered.count, dataset.sampleCount(), uncovered.farthest);
+  return text;
 }
 
 float sampleEyeHeight(const Dataset& dataset) {

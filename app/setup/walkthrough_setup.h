@@ -11,6 +11,11 @@ namespace triwalk {
 
 ViewMesh walkthroughMesh(const Dataset& dataset, const std::string& selectionPath);
 
+// "N of M samples lie outside every view triangle, up to D m from one ...",
+// or empty when every sample is covered: how much of the walkthrough is
+// synthesized from a triangle the walker stands outside of.
+std::string describeUnwalkableSamples(const Dataset& dataset, const ViewMesh& mesh);
+
 // Mean height of the samples: where the camera walks.
 float sampleEyeHeight(const Dataset& dataset);
 

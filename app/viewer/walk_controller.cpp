@@ -1,5 +1,7 @@
 #include "app/viewer/walk_controller.h"
 
+#include "core/geometry/walk_constraint.h"
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -7,23 +9,6 @@
 #include <cmath>
 
 namespace triwalk {
-
-namespace {
-
-bool covered(const ViewMesh& mesh, glm::vec2 point) {
-  const int t = mesh.locate(glm::dvec2(point));
-  return t >= 0 && mesh.contains(t, glm::dvec2(point));
-}
-
-}  // namespace
-
-glm::vec3 constrainedStep(const ViewMesh& mesh, glm::vec3 from, glm::vec2 step) {
-  const glm::vec2 start(from);
-  for (const glm::vec2 candidate : {start + step, start + glm::vec2(step.x, 0.0f), start + glm::vec2(0.0f, step.y)}) {
-    if (covered(mesh, candidate)) return glm::vec3(candidate, from.z);
-  }
-  return from;
-}
 
 void WalkController::update(GLFWwindow* window, double seconds, bool keyboardFree, bool mouseFree, const ViewMesh& mesh,
                             WalkState& state) {

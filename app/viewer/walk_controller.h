@@ -2,7 +2,7 @@
 // Walking: W/S or Up/Down move along the view, A/D or Left/Right step
 // sideways, Shift runs; dragging with the left or right mouse button on
 // the view looks around. Input ImGui wants is left to ImGui. The person
-// stays inside the area the triangulation covers (sliding along its edge).
+// stays where core/geometry/walk_constraint.h allows (sliding along walls).
 
 #include "core/geometry/view_mesh.h"
 
@@ -28,9 +28,5 @@ private:
   bool dragging_ = false;
   double lastX_ = 0.0, lastY_ = 0.0;
 };
-
-// Moves from `from` by `step` in x, y, staying inside the mesh: the full
-// step if its end is covered, else the covered component, else none.
-glm::vec3 constrainedStep(const ViewMesh& mesh, glm::vec3 from, glm::vec2 step);
 
 }  // namespace triwalk

@@ -4,7 +4,9 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace triwalk {
 
@@ -62,6 +64,21 @@ MethodEvaluation evaluateMesh(const std::string& method, const ViewMesh& mesh, D
   evaluation.probeErrors = probeErrors(mesh, errors, &evaluation.probeTriangles);
   meanAndDeviation(evaluation.probeErrors, evaluation.probeMeanError, evaluation.probeStdError);
   return evaluation;
+}
+
+UncoveredPositions uncoveredPositions(const ViewMesh& mesh, std::span<const glm::dvec2> positions) {
+  constexpr double kOnTheMesh = 1e-6;  // metres: a position on an edge rounds either way
+  UncoveredPositions uncovered;
+  for (glm::dvec2 position : positions) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int t = 0; t < mesh.triangleCount() && nearest > kOnTheMesh; ++t) {
+      nearest = std::min(nearest, mesh.distanceToTriangle(t, position));
+    }
+    if (nearest <= kOnTheMesh) continue;
+    ++uncovered.count;
+    uncovered.farthest = std::max(uncovered.farthest, nearest);
+  }
+  return uncovered;
 }
 
 }  // namespace triwalk

@@ -8,6 +8,7 @@
 #include "core/geometry/view_mesh.h"
 #include "core/selection/triangle_error.h"
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -46,5 +47,16 @@ struct PairedComparison {
 };
 
 PairedComparison compareProbeErrors(const std::vector<double>& candidate, const std::vector<double>& baseline);
+
+// The positions outside every triangle of a selection's mesh (further than
+// a micrometre from all of them): where collapses shrank the boundary, or a
+// removal took a loop's triangles, a walker cannot go, and a probe there
+// is served from a triangle that may be far away.
+struct UncoveredPositions {
+  int count = 0;
+  double farthest = 0.0;  // metres from the nearest triangle
+};
+
+UncoveredPositions uncoveredPositions(const ViewMesh& mesh, std::span<const glm::dvec2> positions);
 
 }  // namespace triwalk

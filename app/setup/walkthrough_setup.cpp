@@ -18,8 +18,8 @@ std::string describeUnwalkableSamples(const Dataset& dataset, const ViewMesh& me
   if (uncovered.count == 0) return "";
   char text[200];
   std::snprintf(text, sizeof text,
-                "%d of %d samples lie outside every view triangle, up to %.2f m from one: a walker there "
-                "sees them synthesized from the best-ranked triangle's references",
+                "%d of %d samples lie outside every view triangle (up to %.2f m from one); frames there come "
+                "from the best-ranked triangle's references",
                 uncovered.count, dataset.sampleCount(), uncovered.farthest);
   return text;
 }

@@ -134,10 +134,12 @@ void registerEvalCommand(CLI::App& app) {
                                                  "random baseline")});
 
     std::vector<MethodEvaluation> evaluations;
+    std::vector<UncoveredPositions> outside;  // the samples a walker finds outside every triangle, by row
     ProgressReporter progress("evaluate", rows.size(), a.quiet);
     for (const Row& row : rows) {
       throwIfInterrupted();
       evaluations.push_back(evaluateMesh(row.method, row.mesh, errors));
+      outside.push_back(uncoveredPositions(row.mesh, positions));
       if (!a.heatmaps.empty()) writeHeatmaps(a.heatmaps, evaluations.back(), row.mesh, errors);
       progress.advance();
     }
@@ -145,11 +147,15 @@ void registerEvalCommand(CLI::App& app) {
 
     std::printf("\nTable 1: %s, %d samples, %d probes; %s\n\n", dataset.manifest().scene.c_str(), dataset.sampleCount(),
                 dataset.probeCount(), describeErrorSettings(settings).c_str());
-    std::printf("| method | samples | triangles | mean error | std. deviation | probe mean error | probe std. deviation |\n");
-    std::printf("|---|---|---|---|---|---|---|\n");
-    for (const MethodEvaluation& e : evaluations) {
-      std::printf("| %s | %d | %d | %.4f | %.4f | %.4f | %.4f |\n", label(e.method), e.samples, e.triangles, e.meanError,
-                  e.stdError, e.probeMeanError, e.probeStdError);
+    std::printf(
+        "| method | samples | triangles | mean error | std. deviation | probe mean error | probe std. deviation | "
+        "samples outside every triangle (farthest) |\n");
+    std::printf("|---|---|---|---|---|---|---|---|\n");
+    for (size_t row = 0; row < evaluations.size(); ++row) {
+      const MethodEvaluation& e = evaluations[row];
+      std::printf("| %s | %d | %d | %.4f | %.4f | %.4f | %.4f | %d (%.2f m) |\n", label(e.method), e.samples,
+                  e.triangles, e.meanError, e.stdError, e.probeMeanError, e.probeStdError, outside[row].count,
+                  outside[row].farthest);
     }
     const MethodEvaluation& collapse = evaluations[2];
     std::printf("\nprobe mean error of edge collapse (%.4f) against the baselines: the change, +- one standard error of\n"
@@ -168,7 +174,8 @@ void registerEvalCommand(CLI::App& app) {
 
     if (!a.json.empty()) {
       nlohmann::json document = {{"dataset", a.dataset}, {"settings", describeErrorSettings(settings)}, {"rows", nlohmann::json::array()}};
-      for (const MethodEvaluation& e : evaluations) {
+      for (size_t row = 0; row < evaluations.size(); ++row) {
+        const MethodEvaluation& e = evaluations[row];
         document["rows"].push_back({{"method", e.method},
                                     {"samples", e.samples},
                                     {"triangles", e.triangles},
@@ -176,6 +183,8 @@ void registerEvalCommand(CLI::App& app) {
                                     {"std_error", e.stdError},
                                     {"probe_mean_error", e.probeMeanError},
                                     {"probe_std_error", e.probeStdError},
+                                    {"samples_outside", outside[row].count},
+                                    {"farthest_outside_m", outside[row].farthest},
                                     {"probe_errors", e.probeErrors}});
       }
       writeJsonFile(a.json, document);

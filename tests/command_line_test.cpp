@@ -259,6 +259,19 @@ TEST_CASE("an irregular data set without paths decimates, evaluates against ever
     CHECK(row["samples"].get<int>() >= 3);
   }
   CHECK(methods == std::vector<std::string>{"initial", "uniform", "edge_collapse", "kmedoids", "random"});
+  // Every sample is a vertex of the dense triangulation; what edge collapse
+  // leaves outside its triangles, decimate said too (or said nothing).
+  CHECK(document["rows"][0]["samples_outside"].get<int>() == 0);
+  const int outside = document["rows"][2]["samples_outside"].get<int>();
+  const size_t said = decimate.out.find(" samples lie outside every view triangle");
+  if (outside == 0) {
+    CHECK(said == std::string::npos);
+  } else {
+    REQUIRE(said != std::string::npos);
+    const size_t line = decimate.out.rfind('\n', said) + 1;
+    CHECK(decimate.out.substr(line, said - line) == std::to_string(outside) + " of 20");
+    CHECK(document["rows"][2]["farthest_outside_m"].get<double>() > 0.0);
+  }
   // The selection prices its steps with the paper's inverse-distance
   // weights; the evaluation blends as the viewer does, by reliability.
   CHECK(decimate.out.find("distance weights") != std::string::npos);

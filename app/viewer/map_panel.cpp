@@ -1,15 +1,18 @@
-// Top view: every sample, the current triangulation colored by triangle
-// error (with a legend), the person and where they look, the triangle they
-// stand in; a click selects a triangle for the inspector.
+// Top view: the walkable region's walls, every sample, the current
+// triangulation colored by triangle error (with a legend), the person and
+// where they look, the triangle they stand in; a click selects a triangle
+// for the inspector.
 
 #include "app/viewer/panel_window.h"
 #include "app/viewer/viewer_state.h"
+#include "core/geometry/walkable_region.h"
 #include "core/image/color.h"
 
 #include <imgui.h>
 
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 namespace triwalk {
 
@@ -47,6 +50,19 @@ void drawMapPanel(ViewerState& state) {
   };
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->AddRectFilled(origin, ImVec2(origin.x + canvasSize.x, origin.y + canvasSize.y), IM_COL32(25, 25, 30, 255));
+  // The walkable region's walls: where the walker may go, triangles or not.
+  if (const auto& region = state.mesh.region()) {
+    std::vector<ImVec2> points;
+    auto wall = [&](const Ring& ring) {
+      points.clear();
+      for (glm::dvec2 p : ring) points.push_back(toScreen(glm::vec2(p)));
+      draw->AddPolyline(points.data(), int(points.size()), IM_COL32(150, 140, 110, 255), ImDrawFlags_Closed, 1.5f);
+    };
+    for (const RegionPolygon& polygon : region->polygons()) {
+      wall(polygon.outer);
+      for (const Ring& hole : polygon.holes) wall(hole);
+    }
+  }
 
   const std::vector<Triangle>& triangles = state.mesh.triangles();
   for (size_t t = 0; t < triangles.size(); ++t) {

@@ -79,9 +79,9 @@ void registerDecimateCommand(CLI::App& app) {
                   run.selection.nextCost);
     }
     std::printf("\n");
-    if (const std::string unwalkable = describeUnwalkableSamples(dataset, selectionMesh(run.selection, dataset));
-        !unwalkable.empty()) {
-      std::printf("%s\n", unwalkable.c_str());
+    if (const std::string outside = describeSamplesOutsideTriangles(dataset, selectionMesh(run.selection, dataset));
+        !outside.empty()) {
+      std::printf("%s\n", outside.c_str());
     }
     std::printf(
         "%zu collapses in %.1f s (edge costing %.1f s); errors computed %llu, served from the cache %llu; "

@@ -33,8 +33,8 @@ void registerRegionCommand(CLI::App& app) {
     std::printf("%s: region %.1f m2 in %zu part%s, %d samples, %d probes, %d view triangles over %d references\n",
                 a.out.c_str(), region.area(), region.polygons().size(), region.polygons().size() == 1 ? "" : "s",
                 dataset.sampleCount(), dataset.probeCount(), mesh.triangleCount(), mesh.vertexCount());
-    if (const std::string unwalkable = describeUnwalkableSamples(dataset, mesh); !unwalkable.empty()) {
-      std::printf("%s\n", unwalkable.c_str());
+    if (const std::string outside = describeSamplesOutsideTriangles(dataset, mesh); !outside.empty()) {
+      std::printf("%s\n", outside.c_str());
     }
   });
 }

@@ -13,7 +13,7 @@ ViewMesh walkthroughMesh(const Dataset& dataset, const std::string& selectionPat
   return selectionMesh(readSelection(selectionPath, dataset), dataset);
 }
 
-std::string describeUnwalkableSamples(const Dataset& dataset, const ViewMesh& mesh) {
+std::string describeSamplesOutsideTriangles(const Dataset& dataset, const ViewMesh& mesh) {
   const UncoveredPositions uncovered = uncoveredPositions(mesh, samplePositions(dataset));
   if (uncovered.count == 0) return "";
   char text[200];

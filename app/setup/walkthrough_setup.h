@@ -14,7 +14,7 @@ ViewMesh walkthroughMesh(const Dataset& dataset, const std::string& selectionPat
 // "N of M samples lie outside every view triangle, up to D m from one ...",
 // or empty when every sample is covered: how much of the walkthrough is
 // synthesized from a triangle the walker stands outside of.
-std::string describeUnwalkableSamples(const Dataset& dataset, const ViewMesh& mesh);
+std::string describeSamplesOutsideTriangles(const Dataset& dataset, const ViewMesh& mesh);
 
 // Mean height of the samples: where the camera walks.
 float sampleEyeHeight(const Dataset& dataset);

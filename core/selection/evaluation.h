@@ -50,8 +50,8 @@ PairedComparison compareProbeErrors(const std::vector<double>& candidate, const 
 
 // The positions outside every triangle of a selection's mesh (further than
 // a micrometre from all of them): where collapses shrank the boundary, or a
-// removal took a loop's triangles, a walker cannot go, and a probe there
-// is served from a triangle that may be far away.
+// removal took a loop's triangles, a walker or a probe is served from a
+// triangle that may be far away.
 struct UncoveredPositions {
   int count = 0;
   double farthest = 0.0;  // metres from the nearest triangle

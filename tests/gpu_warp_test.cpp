@@ -4,6 +4,7 @@
 #include "core/image/image_compare.h"
 #include "core/io/dataset.h"
 #include "core/io/png_io.h"
+#include "core/io/simplified_mesh_store.h"
 #include "core/selection/selection.h"
 #include "core/synthesis/blend.h"
 #include "core/synthesis/hole_fill.h"
@@ -11,6 +12,7 @@
 #include "render/capture/dataset_capture.h"
 #include "render/gl/gl_context.h"
 #include "render/scene/scene_description.h"
+#include "render/walkthrough/frame_scale.h"
 #include "render/walkthrough/gpu_warper.h"
 #include "render/walkthrough/walkthrough_renderer.h"
 #include "tests/analytic_scene.h"
@@ -325,6 +327,70 @@ TEST_CASE("the GPU warps simplified meshes like its exact grid (PSNR >= 35 dB) w
     CHECK(psnr(simplified.image, grid.image) >= 35.0);
     CHECK(simplified.trianglesDrawn * 2 < grid.trianglesDrawn);  // measured 3.0 to 5.0x fewer at 512 px, 6x at 1024
   }
+}
+
+TEST_CASE(
+    "walking frames draw the references' walking meshes: fewer triangles, the same picture at the walking scale") {
+  testing::TemporaryDirectory directory;
+  auto context = createHeadlessContext();
+  const Dataset dataset = captureSmallBuiltin(directory.path(), 3, 512);
+  WarpOptions options;
+  options.mesh = SourceMesh::Simplified;
+  // The viewer's proportions: a 60-degree frame a quarter of 640x360 from
+  // 512-column references, as a quarter of 1280x720 from 1024 columns.
+  PinholeCamera camera = testCamera({}, 0.0f, 160, 90);
+  camera.verticalFovDegrees = 60.0f;
+  const std::vector<int> samples = {0, 1, 3};
+  for (int sample : samples) camera.position += dataset.sample(sample).position / 3.0f;
+  struct Frames {
+    GpuFrame still, walking;  // at frame scale 1 and kMinimumWalkingScale
+    std::vector<size_t> walkingIndices;
+  };
+  const auto framesOf = [&](float walkingScale) {
+    PanoramaCache cache(dataset, options, size_t(256) << 20, walkingScale);
+    std::vector<const GpuPanorama*> references;
+    Frames frames;
+    for (int sample : samples) {
+      references.push_back(cache.wait(sample));
+      size_t indices = 0;
+      for (const PanoramaTile& tile : references.back()->tilesAt(kMinimumWalkingScale))
+        indices += size_t(tile.indexCount);
+      frames.walkingIndices.push_back(indices);
+    }
+    GpuWarper warper(camera.width, camera.height);
+    for (const float scale : {1.0f, kMinimumWalkingScale}) {
+      const GpuFrameStatistics statistics = warper.render(camera, references, GpuWarpSettings{}, false, scale);
+      (scale == 1.0f ? frames.still : frames.walking) = {warper.readPixels(), statistics.trianglesDrawn};
+    }
+    return frames;
+  };
+  const Frames without = framesOf(0.0f), with = framesOf(kMinimumWalkingScale);
+  // Without walking meshes every frame draws the mesh; with them a full
+  // frame still does, pixel for pixel.
+  CHECK(without.walking.trianglesDrawn == without.still.trianglesDrawn);
+  CHECK(with.still.trianglesDrawn == without.still.trianglesDrawn);
+  CHECK(differingPixelFraction(with.still.image, without.still.image, 0) == 0.0);
+  // The walking frame: a surface moves by up to four times the mesh's
+  // tolerance in reference pixels, about one of the frame's own.
+  INFO("walking frame: " << with.walking.trianglesDrawn << " triangles against " << with.still.trianglesDrawn
+                         << ", PSNR " << psnr(with.walking.image, with.still.image) << " dB");
+  CHECK(with.walking.trianglesDrawn * 4 < with.still.trianglesDrawn * 3);
+  CHECK(psnr(with.walking.image, with.still.image) >= 35.0);
+  // A second working set reads the walking meshes from the data set's
+  // store (their files are not written again); a corrupt one is made again.
+  SimplifiedMeshStore store(dataset);
+  std::vector<std::filesystem::path> files;
+  std::vector<std::filesystem::file_time_type> written;
+  for (int sample : samples) {
+    files.push_back(store.file(dataset.sample(sample), 512, options.meshTolerancePixels, kMinimumWalkingScale));
+    REQUIRE(std::filesystem::exists(files.back()));
+    written.push_back(std::filesystem::last_write_time(files.back()));
+  }
+  CHECK(framesOf(kMinimumWalkingScale).walkingIndices == with.walkingIndices);
+  for (size_t i = 0; i < files.size(); ++i) CHECK(std::filesystem::last_write_time(files[i]) == written[i]);
+  std::filesystem::resize_file(files[0], std::filesystem::file_size(files[0]) - 4);
+  CHECK(framesOf(kMinimumWalkingScale).walkingIndices == with.walkingIndices);
+  CHECK(std::filesystem::last_write_time(files[0]) != written[0]);
 }
 
 TEST_CASE("golden frames: the built-in scene captured small and walked through renders as committed") {

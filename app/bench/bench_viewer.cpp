@@ -6,7 +6,9 @@
 #include "render/walkthrough/walkthrough_renderer.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <functional>
+#include <optional>
 #include <thread>
 
 namespace triwalk {
@@ -26,7 +28,7 @@ Walk walk(const Dataset& dataset, const ViewMesh& mesh, const std::vector<Camera
           bool holdBudget) {
   WarpOptions warpOptions;
   warpOptions.mesh = sourceMesh;
-  PanoramaCache cache(dataset, warpOptions, size_t(1) << 30);
+  PanoramaCache cache(dataset, warpOptions, size_t(1) << 30, kMinimumWalkingScale);
   WalkthroughRenderer renderer(mesh, cache, 1280, 720);
   FrameScaleController frameScale(kWalkFrameBudgetMilliseconds, kMinimumWalkingScale);
   Walk result;
@@ -39,7 +41,7 @@ Walk walk(const Dataset& dataset, const ViewMesh& mesh, const std::vector<Camera
     camera.yawDegrees = pose.yawDegrees;
     glFinish();
     const auto start = BenchClock::now();
-    const WalkthroughRenderer::Frame frame = renderer.render(camera, GpuWarpSettings{}, false);
+    const WalkthroughRenderer::Frame frame = renderer.render(camera, GpuWarpSettings{}, false, false, scale);
     glFinish();
     const double elapsed = secondsSince(start);
     if (frame.available == 3) frameScale.record(scale, 1000.0 * elapsed);
@@ -67,6 +69,7 @@ void benchReferencePreparation(BenchTable& table, const Dataset& dataset, const 
   struct Way {
     std::string name;
     std::function<WarpSource(const ViewRecord&, const Panorama&)> source;
+    bool walking = false;  // and the walking mesh, from the store (filled by the first way that asks)
   };
   const auto yaw = [](const ViewRecord& view) { return degreesToRadians(view.yawDegrees); };
   const std::vector<Way> ways = {
@@ -76,22 +79,48 @@ void benchReferencePreparation(BenchTable& table, const Dataset& dataset, const 
        [&](const ViewRecord& v, const Panorama& p) { return WarpSource(p, v.position, yaw(v), simplified); }},
       {"simplified, read from the data set's mesh store",
        [&](const ViewRecord& v, const Panorama& p) { return store.source(v, p, simplified); }},
+      {"simplified, read from the store, and its walking mesh made and stored",
+       [&](const ViewRecord& v, const Panorama& p) { return store.source(v, p, simplified); }, true},
+      {"simplified and its walking mesh, both read from the store",
+       [&](const ViewRecord& v, const Panorama& p) { return store.source(v, p, simplified); }, true},
   };
+  // The walking meshes are made again for the first way that asks.
+  for (const int sample : references) {
+    const ViewRecord& view = dataset.sample(sample);
+    std::filesystem::remove(
+        store.file(view, dataset.manifest().width, simplified.meshTolerancePixels, kMinimumWalkingScale));
+  }
   for (const Way& way : ways) {
     double decodeSeconds = 0.0, totalSeconds = 0.0;
+    size_t triangles = 0, walkingTriangles = 0;
     for (const int sample : references) {
       const ViewRecord& view = dataset.sample(sample);
       const auto start = BenchClock::now();
       const Panorama panorama = dataset.loadView(view);
       decodeSeconds += secondsSince(start);
-      const PreparedPanorama prepared = preparePanorama(panorama, yaw(view), way.source(view, panorama));
+      const WarpSource source = way.source(view, panorama);
+      std::optional<WalkingMesh> walking;
+      if (way.walking) {
+        walking = WalkingMesh{store.walkingTriangles(view, panorama, source, simplified, kMinimumWalkingScale),
+                              kMinimumWalkingScale};
+      }
+      const PreparedPanorama prepared = preparePanorama(panorama, yaw(view), source, walking ? &*walking : nullptr);
       totalSeconds += secondsSince(start);
+      const auto count = [](const std::vector<PanoramaTile>& tiles) {
+        size_t indices = 0;
+        for (const PanoramaTile& tile : tiles) indices += size_t(tile.indexCount);
+        return indices / 3;
+      };
+      triangles += count(prepared.tiles);
+      walkingTriangles += count(prepared.walkingTiles);
     }
     const double n = double(references.size());
     table.add({"reference preparation on the viewer's loader thread (" + way.name + ")", size,
                formatNumber(1000.0 * totalSeconds / n, 0) + " ms",
                "of which decoding the EXR " + formatNumber(1000.0 * decodeSeconds / n, 0) +
-                   " ms; then the warp source and the GPU tiles"});
+                   " ms; then the warp source and the GPU tiles; " + formatNumber(double(triangles) / n, 0) +
+                   " triangles" +
+                   (walkingTriangles > 0 ? ", walking mesh " + formatNumber(double(walkingTriangles) / n, 0) : "")});
   }
 }
 

@@ -230,9 +230,10 @@ private:
   // A working set for warpOptions_ and its renderer; with simplified
   // meshes, the loader simplifies the walkthrough's references into the
   // data set's store while idle, nearest to the walker first, so that a
-  // first walk does not wait for them.
+  // first walk does not wait for them; each also gets the walking mesh for
+  // frames at the walk's lowest scale.
   void openWorkingSet() {
-    cache_ = std::make_unique<PanoramaCache>(dataset_, warpOptions_, options_.cacheBytes);
+    cache_ = std::make_unique<PanoramaCache>(dataset_, warpOptions_, options_.cacheBytes, kMinimumWalkingScale);
     renderer_ = std::make_unique<WalkthroughRenderer>(state_.mesh, *cache_, options_.width, options_.height);
     std::vector<int> references = state_.mesh.vertices();
     const glm::dvec2 walker(state_.walk.position);
@@ -271,7 +272,7 @@ private:
       camera = sized(scale);
       glFinish();
       const auto start = std::chrono::steady_clock::now();
-      const WalkthroughRenderer::Frame frame = renderer_->render(camera, state_.warp, finalFrame);
+      const WalkthroughRenderer::Frame frame = renderer_->render(camera, state_.warp, finalFrame, false, scale);
       glFinish();
       // Frames with a reference still loading draw fewer layers: not a measure of the warp.
       if (frame.available == 3) {

@@ -1,6 +1,7 @@
 #include "core/io/simplified_mesh_store.h"
 
 #include "core/geometry/projection.h"
+#include "core/support/errors.h"
 #include "core/support/stable_hash.h"
 
 #include <array>
@@ -46,7 +47,8 @@ SimplifiedMeshStore::SimplifiedMeshStore(const std::filesystem::path& datasetDir
 
 SimplifiedMeshStore::SimplifiedMeshStore(const Dataset& dataset) : SimplifiedMeshStore(dataset.directory()) {}
 
-std::filesystem::path SimplifiedMeshStore::file(const ViewRecord& view, int width, float tolerancePixels) const {
+std::filesystem::path SimplifiedMeshStore::file(const ViewRecord& view, int width, float tolerancePixels,
+                                                float walkingScale) const {
   // view.file is a path inside the data set (checked when it was opened).
   // The default tolerance keeps the name stores were first written under.
   std::string tolerance;
@@ -55,7 +57,33 @@ std::filesystem::path SimplifiedMeshStore::file(const ViewRecord& view, int widt
     std::snprintf(text, sizeof text, ".%.2fpx", double(tolerancePixels));
     tolerance = text;
   }
+  if (walkingScale > 0.0f) {
+    char text[32];
+    std::snprintf(text, sizeof text, ".walking%.2f", double(walkingScale));
+    tolerance += text;
+  }
   return files_.folder() / (view.file + "." + std::to_string(width) + tolerance + ".mesh");
+}
+
+std::vector<uint32_t> SimplifiedMeshStore::walkingTriangles(const ViewRecord& view, const Panorama& panorama,
+                                                            const WarpSource& source, const WarpOptions& options,
+                                                            float scale) {
+  TRIWALK_CHECK(options.mesh == SourceMesh::Simplified && scale > 0.0f && scale <= 1.0f,
+                "a walking mesh is a simplified mesh's, for a scale in (0, 1]");
+  const std::filesystem::path path = file(view, panorama.width(), options.meshTolerancePixels, scale);
+  StableHash hash;
+  hash.addValue(sourceKey(view, panorama, options));
+  hash.addValue(scale);
+  const uint64_t key = hash.value();
+  const uint32_t vertexCount = uint32_t(panorama.width()) * uint32_t(panorama.height()) + 2;
+  if (const std::optional<SimplifiedTriangles> stored = load(path, key, vertexCount)) {
+    // A file whose vertices are not the source's is simplified again, as a malformed one.
+    if (std::optional<std::vector<uint32_t>> triangles = source.sourceTriangles(*stored)) return std::move(*triangles);
+  }
+  const float tolerance = options.meshTolerancePixels;
+  const SimplifiedTriangles coarser = source.coarserTriangles(panorama, tolerance / scale - tolerance);
+  store(path, key, coarser);
+  return source.sourceTriangles(coarser).value();
 }
 
 WarpSource SimplifiedMeshStore::source(const ViewRecord& view, const Panorama& panorama, const WarpOptions& options) {

@@ -17,6 +17,7 @@
 #include <atomic>
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 namespace triwalk {
 
@@ -32,12 +33,22 @@ public:
   // for this very source, else they are simplified now and stored.
   WarpSource source(const ViewRecord& view, const Panorama& panorama, const WarpOptions& options);
 
+  // The walking mesh of a simplified source (render/walkthrough/gpu_panorama.h)
+  // for frames at `scale` of the window's side: its triangles simplified
+  // further, to the tolerance t / scale in all for its own t, as indices
+  // into source's vertices. From the store when it holds them for this
+  // very source, else made now and stored.
+  std::vector<uint32_t> walkingTriangles(const ViewRecord& view, const Panorama& panorama, const WarpSource& source,
+                                         const WarpOptions& options, float scale);
+
   // Where view's triangles at this width and tolerance are kept: one file
   // per tolerance, so that commands run with different --mesh-tolerance
-  // never replace (and simplify again) each other's.
-  std::filesystem::path file(const ViewRecord& view, int width, float tolerancePixels) const;
+  // never replace (and simplify again) each other's. walkingScale > 0: the
+  // file of the walking mesh for that scale.
+  std::filesystem::path file(const ViewRecord& view, int width, float tolerancePixels, float walkingScale = 0.0f) const;
 
-  // Sources whose triangles were read from the store, and simplified here.
+  // Sources whose triangles were read from the store, and simplified here
+  // (walking meshes not counted).
   int loaded() const { return loaded_; }
   int simplified() const { return simplified_; }
 

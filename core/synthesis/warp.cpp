@@ -47,8 +47,11 @@ const char* sourceMeshName(SourceMesh mesh) { return mesh == SourceMesh::Grid ? 
 
 WarpSource::WarpSource(const Panorama& panorama, glm::vec3 position, float yawRadians, const WarpOptions& options,
                        std::optional<SimplifiedTriangles> stored)
-    : width_(panorama.width()), height_(panorama.height()), position_(position),
-      projection_{panorama.width(), panorama.height(), yawRadians} {
+    : width_(panorama.width()),
+      height_(panorama.height()),
+      position_(position),
+      projection_{panorama.width(), panorama.height(), yawRadians},
+      meshTolerancePixels_(options.meshTolerancePixels) {
   TRIWALK_CHECK(width_ >= 2 && height_ >= 2, "panorama too small to warp");
   const size_t pixels = size_t(width_) * size_t(height_);
   points_.resize(pixels + 2);
@@ -137,33 +140,74 @@ WarpSource::WarpSource(const Panorama& panorama, glm::vec3 position, float yawRa
   }
 }
 
-SimplifiedTriangles WarpSource::simplifyKept(const Panorama& panorama, float tolerancePixels) const {
-  // Surfaces and sky apart: sky vertices are directions, not points, and
-  // no kept triangle joins the two.
-  std::vector<uint32_t> surface, sky;
-  for (uint32_t t = 0; t < uint32_t(kept_.size()); ++t) {
-    if (!kept_[t]) continue;
-    uint32_t v[3];
-    triangleVertices(t, v);
-    std::vector<uint32_t>& list = infinite_[v[0]] ? sky : surface;
-    list.insert(list.end(), v, v + 3);
-  }
-  // The bound in metres holds at the distance nearer than which 5% of the
-  // surface lies; nearer surfaces may move by a little more than the
-  // tolerance in pixels, farther ones by less.
+namespace {
+
+// The distance nearer than which 5% of the source's finite surface lies: a
+// tolerance in pixels becomes metres there, so nearer surfaces may move by
+// a little more than the tolerance in pixels, farther ones by less.
+float nearSurfaceDistance(const Panorama& panorama) {
   std::vector<float> distances;
   for (const float d : panorama.distance.pixels) {
     if (std::isfinite(d)) distances.push_back(d);
   }
-  const float pixelAngle = 2.0f * float(std::numbers::pi) / float(width_);
-  float nearDistance = 0.0f;
-  if (!distances.empty()) {
-    const auto nth = distances.begin() + std::ptrdiff_t(distances.size() / 20);
-    std::nth_element(distances.begin(), nth, distances.end());
-    nearDistance = *nth;
+  if (distances.empty()) return 0.0f;
+  const auto nth = distances.begin() + std::ptrdiff_t(distances.size() / 20);
+  std::nth_element(distances.begin(), nth, distances.end());
+  return *nth;
+}
+
+// Surfaces and sky apart: sky vertices are directions, not points, and no
+// triangle joins the two; pixelAngle is the source's, in radians.
+SimplifiedTriangles simplifyWithin(const SimplifiedTriangles& triangles, std::span<const glm::vec3> points,
+                                   float tolerancePixels, float pixelAngle, float nearDistance) {
+  return {simplifyTriangles(triangles.surface, points, tolerancePixels * pixelAngle * nearDistance),
+          simplifyTriangles(triangles.sky, points, tolerancePixels * pixelAngle)};
+}
+
+}  // namespace
+
+SimplifiedTriangles WarpSource::simplifyKept(const Panorama& panorama, float tolerancePixels) const {
+  SimplifiedTriangles kept;
+  for (uint32_t t = 0; t < uint32_t(kept_.size()); ++t) {
+    if (!kept_[t]) continue;
+    uint32_t v[3];
+    triangleVertices(t, v);
+    std::vector<uint32_t>& list = infinite_[v[0]] ? kept.sky : kept.surface;
+    list.insert(list.end(), v, v + 3);
   }
-  return {simplifyTriangles(surface, points_, tolerancePixels * pixelAngle * nearDistance),
-          simplifyTriangles(sky, points_, tolerancePixels * pixelAngle)};
+  const float pixelAngle = 2.0f * float(std::numbers::pi) / float(width_);
+  return simplifyWithin(kept, points_, tolerancePixels, pixelAngle, nearSurfaceDistance(panorama));
+}
+
+SimplifiedTriangles WarpSource::coarserTriangles(const Panorama& panorama, float extraTolerancePixels) const {
+  TRIWALK_CHECK(mesh_ == SourceMesh::Simplified, "only a simplified mesh is simplified further");
+  SimplifiedTriangles mine;
+  for (size_t i = 0; i < triangles_.size(); i += 3) {
+    std::vector<uint32_t>& list = infinite_[triangles_[i]] ? mine.sky : mine.surface;
+    list.insert(list.end(), triangles_.begin() + std::ptrdiff_t(i), triangles_.begin() + std::ptrdiff_t(i + 3));
+  }
+  const float pixelAngle = 2.0f * float(std::numbers::pi) / float(width_);
+  SimplifiedTriangles coarser =
+      simplifyWithin(mine, points_, extraTolerancePixels, pixelAngle, nearSurfaceDistance(panorama));
+  for (std::vector<uint32_t>* list : {&coarser.surface, &coarser.sky}) {
+    for (uint32_t& v : *list) v = gridVertex_[v];
+  }
+  return coarser;
+}
+
+std::optional<std::vector<uint32_t>> WarpSource::sourceTriangles(const SimplifiedTriangles& triangles) const {
+  TRIWALK_CHECK(mesh_ == SourceMesh::Simplified, "only a simplified mesh numbers its vertices apart from the grid");
+  std::vector<uint32_t> mine;
+  mine.reserve(triangles.surface.size() + triangles.sky.size());
+  for (const std::vector<uint32_t>* list : {&triangles.surface, &triangles.sky}) {
+    for (const uint32_t v : *list) {
+      // The vertices are kept in grid order (adoptSimplified).
+      const auto found = std::lower_bound(gridVertex_.begin(), gridVertex_.end(), v);
+      if (found == gridVertex_.end() || *found != v) return std::nullopt;
+      mine.push_back(uint32_t(found - gridVertex_.begin()));
+    }
+  }
+  return mine;
 }
 
 void WarpSource::adoptSimplified(const Panorama& panorama, SimplifiedTriangles triangles) {
@@ -180,9 +224,11 @@ void WarpSource::adoptSimplified(const Panorama& panorama, SimplifiedTriangles t
   std::vector<uint32_t> compact(points_.size(), kUnused);
   std::vector<glm::vec3> points, colors;
   std::vector<uint8_t> infinite, orphan;
+  gridVertex_.clear();
   for (uint32_t v = 0; v < uint32_t(points_.size()); ++v) {
     if (!used[v]) continue;
     compact[v] = uint32_t(points.size());
+    gridVertex_.push_back(v);
     points.push_back(points_[v]);
     colors.push_back(colors_[v]);
     infinite.push_back(infinite_[v]);

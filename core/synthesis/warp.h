@@ -124,6 +124,17 @@ public:
                    std::span<glm::vec3> colors) const;
   // Simplified: the triangles in grid numbering, for the mesh store.
   const SimplifiedTriangles& simplifiedTriangles() const { return simplifiedTriangles_; }
+  // Simplified: this mesh simplified further, so that the surface may move
+  // by up to extraTolerancePixels more (the same bound as the mesh's own),
+  // in grid numbering like simplifiedTriangles(); the viewer's walking
+  // frames draw it (render/walkthrough/gpu_panorama.h).
+  SimplifiedTriangles coarserTriangles(const Panorama& panorama, float extraTolerancePixels) const;
+  // Simplified: triangles in grid numbering as indices into this source's
+  // vertices, surface then sky; nothing if one of their vertices is not
+  // one of this source's.
+  std::optional<std::vector<uint32_t>> sourceTriangles(const SimplifiedTriangles& triangles) const;
+  // Simplified: the bound it was simplified within (WarpOptions::meshTolerancePixels).
+  float meshTolerancePixels() const { return meshTolerancePixels_; }
 
 private:
   glm::vec3 colorAt(glm::vec2 imagePoint) const;  // bilinear, for colorsAlong
@@ -135,11 +146,13 @@ private:
   glm::vec3 position_{0.0f};
   EquirectProjection projection_;
   SourceMesh mesh_ = SourceMesh::Grid;
+  float meshTolerancePixels_ = 0.0f;
   std::vector<glm::vec3> points_;   // world point, or unit direction when at infinity
   std::vector<uint8_t> infinite_;
   std::vector<glm::vec3> colors_;   // linear
   std::vector<uint8_t> kept_;       // grid: per triangle
   std::vector<uint32_t> triangles_; // simplified: three vertices per triangle
+  std::vector<uint32_t> gridVertex_;  // simplified: each vertex's grid number, ascending
   std::vector<uint8_t> orphan_;
   uint32_t pixelVertexCount_ = 0;
   uint32_t keptCount_ = 0;

@@ -1,5 +1,7 @@
 #include "render/walkthrough/gpu_panorama.h"
 
+#include "core/support/errors.h"
+
 #include <glm/gtc/packing.hpp>
 
 #include <algorithm>
@@ -17,6 +19,29 @@ void grow(glm::vec3& lower, glm::vec3& upper, bool& any, glm::vec3 p) {
   any = true;
 }
 
+// Appends each non-empty tile's indices to `indices` and returns the tiles,
+// with the bounds of their vertices.
+std::vector<PanoramaTile> appendTiles(const std::vector<std::vector<uint32_t>>& tileIndices, const WarpSource& source,
+                                      std::vector<uint32_t>& indices) {
+  std::vector<PanoramaTile> tiles;
+  for (const std::vector<uint32_t>& list : tileIndices) {
+    if (list.empty()) continue;
+    PanoramaTile tile;
+    tile.firstIndex = indices.size();
+    tile.indexCount = GLsizei(list.size());
+    for (uint32_t vertex : list) {
+      if (source.atInfinity(vertex)) {
+        grow(tile.directionLower, tile.directionUpper, tile.hasInfinite, source.point(vertex));
+      } else {
+        grow(tile.lower, tile.upper, tile.hasFinite, source.point(vertex));
+      }
+    }
+    indices.insert(indices.end(), list.begin(), list.end());
+    tiles.push_back(tile);
+  }
+  return tiles;
+}
+
 }  // namespace
 
 size_t PreparedPanorama::bytes() const {
@@ -24,7 +49,8 @@ size_t PreparedPanorama::bytes() const {
          (triangleIndices.size() + orphanIndices.size()) * sizeof(uint32_t);
 }
 
-PreparedPanorama preparePanorama(const Panorama& panorama, float yawRadians, const WarpSource& source) {
+PreparedPanorama preparePanorama(const Panorama& panorama, float yawRadians, const WarpSource& source,
+                                 const WalkingMesh* walking) {
   PreparedPanorama prepared;
   prepared.width = panorama.width();
   prepared.height = panorama.height();
@@ -56,20 +82,23 @@ PreparedPanorama preparePanorama(const Panorama& panorama, float yawRadians, con
   // Kept triangles by tile: grid quads by their top-left pixel, simplified
   // triangles by their centroid's; then one tile for each pole fan.
   const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height - 1 + kTileSize - 1) / kTileSize;
-  std::vector<std::vector<uint32_t>> tileIndices(size_t(tilesX * tilesY + 2));
   const uint32_t quadTriangles = 2 * uint32_t(width) * uint32_t(height - 1);
   const EquirectProjection projection{width, height, yawRadians};
   const auto direction = [&](uint32_t vertex) {
     return source.atInfinity(vertex) ? source.point(vertex) : glm::normalize(source.point(vertex) - position);
   };
+  const auto simplifiedTile = [&](const uint32_t v[3]) {
+    const glm::vec2 p = projection.imagePoint(direction(v[0]) + direction(v[1]) + direction(v[2]));
+    return size_t(std::min(int(p.y), height - 2) / kTileSize * tilesX + std::min(int(p.x), width - 1) / kTileSize);
+  };
+  std::vector<std::vector<uint32_t>> tileIndices(size_t(tilesX * tilesY + 2));
   for (uint32_t t = 0; t < source.triangleCount(); ++t) {
     if (!source.triangleKept(t)) continue;
     uint32_t v[3];
     source.triangleVertices(t, v);
     size_t tile;
     if (simplified) {
-      const glm::vec2 p = projection.imagePoint(direction(v[0]) + direction(v[1]) + direction(v[2]));
-      tile = size_t(std::min(int(p.y), height - 2) / kTileSize * tilesX + std::min(int(p.x), width - 1) / kTileSize);
+      tile = simplifiedTile(v);
     } else if (t < quadTriangles) {
       const uint32_t quad = t / 2;
       tile = size_t(int(quad / uint32_t(width)) / kTileSize * tilesX + int(quad % uint32_t(width)) / kTileSize);
@@ -78,20 +107,17 @@ PreparedPanorama preparePanorama(const Panorama& panorama, float yawRadians, con
     }
     tileIndices[tile].insert(tileIndices[tile].end(), v, v + 3);
   }
-  for (const std::vector<uint32_t>& list : tileIndices) {
-    if (list.empty()) continue;
-    PanoramaTile tile;
-    tile.firstIndex = prepared.triangleIndices.size();
-    tile.indexCount = GLsizei(list.size());
-    for (uint32_t vertex : list) {
-      if (source.atInfinity(vertex)) {
-        grow(tile.directionLower, tile.directionUpper, tile.hasInfinite, source.point(vertex));
-      } else {
-        grow(tile.lower, tile.upper, tile.hasFinite, source.point(vertex));
-      }
+  prepared.tiles = appendTiles(tileIndices, source, prepared.triangleIndices);
+  if (walking) {
+    TRIWALK_CHECK(simplified, "only a simplified reference has a walking mesh");
+    std::vector<std::vector<uint32_t>> walkingIndices(tileIndices.size());
+    for (size_t i = 0; i + 2 < walking->triangles.size(); i += 3) {
+      const uint32_t* v = &walking->triangles[i];
+      std::vector<uint32_t>& list = walkingIndices[simplifiedTile(v)];
+      list.insert(list.end(), v, v + 3);
     }
-    prepared.triangleIndices.insert(prepared.triangleIndices.end(), list.begin(), list.end());
-    prepared.tiles.push_back(tile);
+    prepared.walkingTiles = appendTiles(walkingIndices, source, prepared.triangleIndices);
+    prepared.walkingScale = walking->scale;
   }
   const uint32_t pixelVertices = simplified ? source.pixelVertexCount() : uint32_t(pixels);
   for (uint32_t v = 0; v < pixelVertices; ++v) {
@@ -107,9 +133,16 @@ PreparedPanorama preparePanorama(const Panorama& panorama, float yawRadians, con
 }
 
 GpuPanorama::GpuPanorama(const PreparedPanorama& prepared)
-    : width_(prepared.width), height_(prepared.height), position_(prepared.position), yaw_(prepared.yaw),
-      orphanCount_(GLsizei(prepared.orphanIndices.size())), tiles_(prepared.tiles),
-      poleDistances_(prepared.poleDistances), poleColors_{prepared.poleColors[0], prepared.poleColors[1]},
+    : width_(prepared.width),
+      height_(prepared.height),
+      position_(prepared.position),
+      yaw_(prepared.yaw),
+      orphanCount_(GLsizei(prepared.orphanIndices.size())),
+      tiles_(prepared.tiles),
+      walkingTiles_(prepared.walkingTiles),
+      walkingScale_(prepared.walkingScale),
+      poleDistances_(prepared.poleDistances),
+      poleColors_{prepared.poleColors[0], prepared.poleColors[1]},
       bytes_(prepared.bytes()) {
   color_ = createTexture(GL_TEXTURE_2D);
   glTextureStorage2D(color_.get(), 1, GL_RGBA16F, width_, height_);
@@ -135,6 +168,12 @@ GpuPanorama::GpuPanorama(const PreparedPanorama& prepared)
     glTextureParameteri(color_.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTextureParameteri(color_.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   }
+}
+
+const std::vector<PanoramaTile>& GpuPanorama::tilesAt(float scale) const {
+  // Frame scales are steps of a twentieth (FrameScaleController), not exact in binary.
+  constexpr float kRounding = 1e-3f;
+  return !walkingTiles_.empty() && scale <= walkingScale_ + kRounding ? walkingTiles_ : tiles_;
 }
 
 }  // namespace triwalk

@@ -14,6 +14,15 @@
 // triangles are tiled by their centroid's pixel, with bounds over all
 // their vertices.
 //
+// Walking frames are drawn at a share s of the window's side
+// (render/walkthrough/frame_scale.h), where a reference pixel spans s times
+// fewer of the frame's pixels than in the still frame: a surface moved by
+// t / s reference pixels moves by as many of the walking frame's pixels as
+// the still frame's t does of its own. So a simplified reference also
+// keeps a walking mesh, its mesh simplified further to t / s_walk, which
+// frames at or below the scale s_walk draw instead; on llvmpipe a small
+// frame's time is the setup of its triangles (docs/BENCHMARKS.md).
+//
 // Preparing (decoding, the stretch test, simplifying or reading the
 // stored simplification, tiling) is CPU work that a loader thread does
 // (PreparedPanorama); uploading it is the GL thread's.
@@ -43,8 +52,12 @@ struct PreparedPanorama {
   // Simplified mesh: xyz a world point (w = 1) or a direction (w = 0);
   // empty for the grid.
   std::vector<glm::vec4> vertices;
-  std::vector<uint32_t> triangleIndices;
+  std::vector<uint32_t> triangleIndices;  // the tiles' and then the walking tiles'
   std::vector<PanoramaTile> tiles;
+  // The walking mesh (empty for the grid or without one), and the largest
+  // frame scale that draws it.
+  std::vector<PanoramaTile> walkingTiles;
+  float walkingScale = 0.0f;
   std::vector<uint32_t> orphanIndices;
   glm::vec2 poleDistances{0.0f};  // +inf at infinity
   glm::vec3 poleColors[2];
@@ -52,9 +65,19 @@ struct PreparedPanorama {
   size_t bytes() const;
 };
 
+// The walking mesh of a simplified reference: its triangles as indices
+// into the source's vertices (core/io/simplified_mesh_store.h keeps them),
+// and the largest frame scale that draws them.
+struct WalkingMesh {
+  std::vector<uint32_t> triangles;
+  float scale = 0.0f;
+};
+
 // source is panorama's warp source (core/io/simplified_mesh_store.h makes
-// it from a data set, with stored simplified triangles).
-PreparedPanorama preparePanorama(const Panorama& panorama, float yawRadians, const WarpSource& source);
+// it from a data set, with stored simplified triangles); walking, if
+// given, a simplified source's walking mesh.
+PreparedPanorama preparePanorama(const Panorama& panorama, float yawRadians, const WarpSource& source,
+                                 const WalkingMesh* walking = nullptr);
 
 class GpuPanorama {
 public:
@@ -72,6 +95,9 @@ public:
   GLuint orphanIndices() const { return orphans_.get(); }
   GLsizei orphanCount() const { return orphanCount_; }
   const std::vector<PanoramaTile>& tiles() const { return tiles_; }
+  // The tiles a frame at `scale` of the window's side draws: the walking
+  // mesh's at or below its scale, else the mesh's.
+  const std::vector<PanoramaTile>& tilesAt(float scale) const;
   glm::vec2 poleDistances() const { return poleDistances_; }
   glm::vec3 poleColor(int pole) const { return poleColors_[pole]; }
   size_t bytes() const { return bytes_; }
@@ -83,7 +109,8 @@ private:
   GlTexture color_, distance_;
   GlBuffer triangles_, orphans_, vertices_;
   GLsizei orphanCount_ = 0;
-  std::vector<PanoramaTile> tiles_;
+  std::vector<PanoramaTile> tiles_, walkingTiles_;
+  float walkingScale_ = 0.0f;
   glm::vec2 poleDistances_{0.0f};
   glm::vec3 poleColors_[2];
   size_t bytes_ = 0;

@@ -113,7 +113,7 @@ void GpuWarper::resize(int width, int height) {
   }
 }
 
-void GpuWarper::drawLayer(const PinholeCamera& camera, const GpuPanorama& reference, int layer,
+void GpuWarper::drawLayer(const PinholeCamera& camera, const GpuPanorama& reference, int layer, float frameScale,
                           GpuFrameStatistics& statistics) {
   glBindFramebuffer(GL_FRAMEBUFFER, layerFramebuffers_[size_t(layer)].get());
   const float uncovered[4] = {0.0f, 0.0f, 0.0f, -1.0f};
@@ -148,7 +148,7 @@ void GpuWarper::drawLayer(const PinholeCamera& camera, const GpuPanorama& refere
   const std::array<float, 5> directionOffsets = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
   std::vector<GLsizei> counts;
   std::vector<const void*> offsets;
-  for (const PanoramaTile& tile : reference.tiles()) {
+  for (const PanoramaTile& tile : reference.tilesAt(frameScale)) {
     const bool visible =
         (tile.hasFinite && boxInside(normals, pointOffsets, camera.position, tile.lower, tile.upper)) ||
         (tile.hasInfinite && boxInside(normals, directionOffsets, glm::vec3(0.0f), tile.directionLower, tile.directionUpper));
@@ -173,7 +173,7 @@ void GpuWarper::drawLayer(const PinholeCamera& camera, const GpuPanorama& refere
 }
 
 GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<const GpuPanorama* const> references,
-                                     const GpuWarpSettings& settings, bool timePasses) {
+                                     const GpuWarpSettings& settings, bool timePasses, float frameScale) {
   TRIWALK_CHECK(!references.empty() && references.size() <= 3, "the warp takes one to three references");
   TRIWALK_CHECK(camera.width == width_ && camera.height == height_, "camera size differs from the warper's");
   GpuFrameStatistics statistics;
@@ -195,7 +195,7 @@ GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<cons
   for (size_t k = 0; k < references.size(); ++k) {
     if (timePasses) glFinish();
     const auto start = std::chrono::steady_clock::now();
-    drawLayer(camera, *references[k], int(k), statistics);
+    drawLayer(camera, *references[k], int(k), frameScale, statistics);
     if (timePasses) {
       glFinish();
       statistics.layerMilliseconds[k] = millisecondsSince(start);

@@ -55,9 +55,11 @@ public:
   int width() const { return width_; }
   int height() const { return height_; }
 
-  // Renders into the output framebuffer; references: 1 to 3.
+  // Renders into the output framebuffer; references: 1 to 3. frameScale:
+  // the frame's share of the window's side (a walking frame below 1 may
+  // draw the references' walking meshes, GpuPanorama::tilesAt).
   GpuFrameStatistics render(const PinholeCamera& camera, std::span<const GpuPanorama* const> references,
-                            const GpuWarpSettings& settings, bool timePasses = false);
+                            const GpuWarpSettings& settings, bool timePasses = false, float frameScale = 1.0f);
 
   // The last frame, top row first.
   Rgb8Image readPixels() const;
@@ -67,7 +69,8 @@ public:
   GLuint outputTexture() const { return output_.get(); }
 
 private:
-  void drawLayer(const PinholeCamera& camera, const GpuPanorama& reference, int layer, GpuFrameStatistics& statistics);
+  void drawLayer(const PinholeCamera& camera, const GpuPanorama& reference, int layer, float frameScale,
+                 GpuFrameStatistics& statistics);
   void fillHoles(float epsilon);
 
   int width_ = 0, height_ = 0;

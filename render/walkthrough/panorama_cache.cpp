@@ -3,11 +3,16 @@
 #include "core/support/errors.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace triwalk {
 
-PanoramaCache::PanoramaCache(const Dataset& dataset, const WarpOptions& options, size_t budgetBytes)
-    : dataset_(dataset), options_(options), budgetBytes_(budgetBytes), meshStore_(dataset),
+PanoramaCache::PanoramaCache(const Dataset& dataset, const WarpOptions& options, size_t budgetBytes, float walkingScale)
+    : dataset_(dataset),
+      options_(options),
+      budgetBytes_(budgetBytes),
+      walkingScale_(walkingScale),
+      meshStore_(dataset),
       loader_([this] { loaderLoop(); }) {}
 
 PanoramaCache::~PanoramaCache() {
@@ -46,16 +51,18 @@ void PanoramaCache::loaderLoop() {
     if (stop_) return;
     const auto next = std::find_if(wanted_.begin(), wanted_.end(), unloaded);
     if (next == wanted_.end()) {
-      // Idle: simplify one mesh into the store (a failure to read shows
-      // when the sample is wanted). A sample loaded already went through
-      // the store.
+      // Idle: simplify one mesh (and its walking mesh) into the store (a
+      // failure to read shows when the sample is wanted). A sample loaded
+      // already went through the store.
       const int sample = idleWork_.front();
       idleWork_.pop_front();
       if (!unloaded(sample)) continue;
       lock.unlock();
       try {
         const ViewRecord& view = dataset_.sample(sample);
-        meshStore_.source(view, dataset_.loadView(view), options_);
+        const Panorama panorama = dataset_.loadView(view);
+        const WarpSource source = meshStore_.source(view, panorama, options_);
+        walkingMesh(view, panorama, source);
       } catch (const std::exception&) {
       }
       lock.lock();
@@ -70,8 +77,9 @@ void PanoramaCache::loaderLoop() {
       const ViewRecord& view = dataset_.sample(sample);
       const Panorama panorama = dataset_.loadView(view);
       const WarpSource source = meshStore_.source(view, panorama, options_);
+      const std::optional<WalkingMesh> walking = walkingMesh(view, panorama, source);
       prepared = std::make_shared<const PreparedPanorama>(
-          preparePanorama(panorama, degreesToRadians(view.yawDegrees), source));
+          preparePanorama(panorama, degreesToRadians(view.yawDegrees), source, walking ? &*walking : nullptr));
     } catch (const std::exception& error) {
       failure = error.what();
     }
@@ -84,6 +92,12 @@ void PanoramaCache::loaderLoop() {
     }
     prepared_.notify_all();
   }
+}
+
+std::optional<WalkingMesh> PanoramaCache::walkingMesh(const ViewRecord& view, const Panorama& panorama,
+                                                      const WarpSource& source) {
+  if (walkingScale_ <= 0.0f || source.mesh() != SourceMesh::Simplified) return std::nullopt;
+  return WalkingMesh{meshStore_.walkingTriangles(view, panorama, source, options_, walkingScale_), walkingScale_};
 }
 
 const GpuPanorama* PanoramaCache::find(int sample) {

@@ -18,6 +18,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <span>
 #include <string>
@@ -28,8 +29,10 @@ namespace triwalk {
 class PanoramaCache {
 public:
   // budgetBytes bounds the resident GPU panoramas (at least the most
-  // recently requested ones stay).
-  PanoramaCache(const Dataset& dataset, const WarpOptions& options, size_t budgetBytes);
+  // recently requested ones stay). walkingScale > 0: simplified references
+  // also get the walking mesh for frames at or below that scale
+  // (preparePanorama).
+  PanoramaCache(const Dataset& dataset, const WarpOptions& options, size_t budgetBytes, float walkingScale = 0.0f);
   ~PanoramaCache();
   PanoramaCache(const PanoramaCache&) = delete;
   PanoramaCache& operator=(const PanoramaCache&) = delete;
@@ -58,10 +61,13 @@ public:
 
 private:
   void loaderLoop();
+  // Loader thread: the source's walking mesh, if it is to have one.
+  std::optional<WalkingMesh> walkingMesh(const ViewRecord& view, const Panorama& panorama, const WarpSource& source);
 
   const Dataset& dataset_;
   WarpOptions options_;
   size_t budgetBytes_;
+  float walkingScale_;
   SimplifiedMeshStore meshStore_;  // used by the loader thread; its counts are atomic
 
   mutable std::mutex mutex_;

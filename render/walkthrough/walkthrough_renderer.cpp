@@ -41,7 +41,7 @@ void WalkthroughRenderer::prefetch(int triangle, glm::vec3 position) {
 }
 
 WalkthroughRenderer::Frame WalkthroughRenderer::render(const PinholeCamera& camera, const GpuWarpSettings& settings,
-                                                       bool waitForPanoramas, bool timePasses) {
+                                                       bool waitForPanoramas, bool timePasses, float frameScale) {
   Frame frame;
   frame.triangle = triangleAt(camera.position);
   if (frame.triangle < 0) return frame;
@@ -55,7 +55,7 @@ WalkthroughRenderer::Frame WalkthroughRenderer::render(const PinholeCamera& came
   }
   frame.available = int(references.size());
   if (warper_.width() != camera.width || warper_.height() != camera.height) warper_.resize(camera.width, camera.height);
-  if (!references.empty()) frame.statistics = warper_.render(camera, references, settings, timePasses);
+  if (!references.empty()) frame.statistics = warper_.render(camera, references, settings, timePasses, frameScale);
   return frame;
 }
 

@@ -26,8 +26,9 @@ public:
 
   // waitForPanoramas: offline rendering waits for the disk; the viewer
   // does not (a frame with no reference loaded leaves the output as it was).
+  // frameScale: see GpuWarper::render.
   Frame render(const PinholeCamera& camera, const GpuWarpSettings& settings, bool waitForPanoramas,
-               bool timePasses = false);
+               bool timePasses = false, float frameScale = 1.0f);
 
   const ViewMesh& mesh() const { return mesh_; }
   void setMesh(ViewMesh mesh);

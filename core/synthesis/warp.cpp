@@ -50,8 +50,7 @@ WarpSource::WarpSource(const Panorama& panorama, glm::vec3 position, float yawRa
     : width_(panorama.width()),
       height_(panorama.height()),
       position_(position),
-      projection_{panorama.width(), panorama.height(), yawRadians},
-      meshTolerancePixels_(options.meshTolerancePixels) {
+      projection_{panorama.width(), panorama.height(), yawRadians} {
   TRIWALK_CHECK(width_ >= 2 && height_ >= 2, "panorama too small to warp");
   const size_t pixels = size_t(width_) * size_t(height_);
   points_.resize(pixels + 2);
@@ -181,11 +180,9 @@ SimplifiedTriangles WarpSource::simplifyKept(const Panorama& panorama, float tol
 
 SimplifiedTriangles WarpSource::coarserTriangles(const Panorama& panorama, float extraTolerancePixels) const {
   TRIWALK_CHECK(mesh_ == SourceMesh::Simplified, "only a simplified mesh is simplified further");
-  SimplifiedTriangles mine;
-  for (size_t i = 0; i < triangles_.size(); i += 3) {
-    std::vector<uint32_t>& list = infinite_[triangles_[i]] ? mine.sky : mine.surface;
-    list.insert(list.end(), triangles_.begin() + std::ptrdiff_t(i), triangles_.begin() + std::ptrdiff_t(i + 3));
-  }
+  // triangles_ holds the surface's, then the sky's (adoptSimplified).
+  const auto skyStart = triangles_.begin() + std::ptrdiff_t(simplifiedTriangles_.surface.size());
+  const SimplifiedTriangles mine{{triangles_.begin(), skyStart}, {skyStart, triangles_.end()}};
   const float pixelAngle = 2.0f * float(std::numbers::pi) / float(width_);
   SimplifiedTriangles coarser =
       simplifyWithin(mine, points_, extraTolerancePixels, pixelAngle, nearSurfaceDistance(panorama));

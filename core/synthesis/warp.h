@@ -133,8 +133,6 @@ public:
   // vertices, surface then sky; nothing if one of their vertices is not
   // one of this source's.
   std::optional<std::vector<uint32_t>> sourceTriangles(const SimplifiedTriangles& triangles) const;
-  // Simplified: the bound it was simplified within (WarpOptions::meshTolerancePixels).
-  float meshTolerancePixels() const { return meshTolerancePixels_; }
 
 private:
   glm::vec3 colorAt(glm::vec2 imagePoint) const;  // bilinear, for colorsAlong
@@ -146,7 +144,6 @@ private:
   glm::vec3 position_{0.0f};
   EquirectProjection projection_;
   SourceMesh mesh_ = SourceMesh::Grid;
-  float meshTolerancePixels_ = 0.0f;
   std::vector<glm::vec3> points_;   // world point, or unit direction when at infinity
   std::vector<uint8_t> infinite_;
   std::vector<glm::vec3> colors_;   // linear

@@ -98,6 +98,25 @@ TEST_CASE("the walking scale does not flicker between sizes on noisy frame times
   CHECK(machine.exact(scale) <= 33.0 * 1.15);
 }
 
+TEST_CASE("frames drawn while a reference loads count only when they are over the budget") {
+  SUBCASE("a walk that starts before its working set is loaded leaves full resolution on the first slow frame") {
+    FrameScaleController controller(33.0, 0.25f);
+    // One layer of three at full resolution on llvmpipe (the viewer's bench).
+    controller.record(1.0f, 160.0, false);
+    CHECK(controller.movingScale(1.0f) <= 0.5f);
+  }
+  SUBCASE("fast frames with fewer layers do not raise the scale") {
+    FrameScaleController controller(33.0, 0.25f);
+    SimulatedMachine machine{20.0, 80.0};
+    const float settled = walk(controller, machine, 300);
+    REQUIRE(settled < 0.8f);
+    for (int i = 0; i < 300; ++i) {
+      controller.record(controller.movingScale(1.0f), 0.3 * machine.exact(controller.movingScale(1.0f)), false);
+    }
+    CHECK(controller.movingScale(1.0f) == doctest::Approx(settled));
+  }
+}
+
 TEST_CASE("the walking scale stays within the minimum, the user's render scale and full resolution") {
   SUBCASE("a budget the machine cannot meet gives the minimum, not less") {
     FrameScaleController controller(33.0, 0.25f);

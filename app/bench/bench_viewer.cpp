@@ -44,7 +44,7 @@ Walk walk(const Dataset& dataset, const ViewMesh& mesh, const std::vector<Camera
     const WalkthroughRenderer::Frame frame = renderer.render(camera, GpuWarpSettings{}, false, false, scale);
     glFinish();
     const double elapsed = secondsSince(start);
-    if (frame.available == 3) frameScale.record(scale, 1000.0 * elapsed);
+    if (frame.available > 0) frameScale.record(scale, 1000.0 * elapsed, frame.available == 3);
     result.milliseconds.push_back(1000.0 * elapsed);
     result.meanScale += scale / double(poses.size());
     result.incomplete += frame.available < 3;

@@ -274,9 +274,10 @@ private:
       const auto start = std::chrono::steady_clock::now();
       const WalkthroughRenderer::Frame frame = renderer_->render(camera, state_.warp, finalFrame, false, scale);
       glFinish();
-      // Frames with a reference still loading draw fewer layers: not a measure of the warp.
-      if (frame.available == 3) {
-        frameScale_.record(scale, 1000.0 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      if (frame.available > 0) {
+        frameScale_.record(scale,
+                           1000.0 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                           frame.available == 3);
       }
       state_.currentScale = scale;
       lastPose_ = RenderedPose{full, state_.warp, meshVersion_};

@@ -46,8 +46,9 @@ void FrameScaleController::forgetCeiling() {
   waitAtCeiling_ = kFramesBeforeProbe;
 }
 
-void FrameScaleController::record(float scale, double milliseconds) {
+void FrameScaleController::record(float scale, double milliseconds, bool complete) {
   if (!(scale > 0.0f) || !std::isfinite(milliseconds) || milliseconds <= 0.0) return;
+  if (!complete && milliseconds <= budget_) return;
   const double fullFrame = milliseconds / (double(scale) * double(scale));
   fullFrameMilliseconds_ = fullFrameMilliseconds_ > 0.0
                                ? (1.0 - kNewestWeight) * fullFrameMilliseconds_ + kNewestWeight * fullFrame

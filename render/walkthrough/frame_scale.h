@@ -54,7 +54,12 @@ public:
   // (the user's render scale). Before any frame is measured: maximum.
   float movingScale(float maximum) const;
   // A frame drawn at scale took milliseconds (the warp, finished).
-  void record(float scale, double milliseconds);
+  // complete: it drew every reference. A frame drawn while one is still
+  // loading warps fewer layers, so it is no measure of the warp's cost,
+  // except that one over the budget would be further over with all of
+  // them: only those count. Otherwise a walk that starts before its
+  // working set is loaded stays at full resolution until it is.
+  void record(float scale, double milliseconds, bool complete = true);
 
   void setBudgetMilliseconds(double milliseconds);
 

@@ -332,6 +332,35 @@ TEST_CASE("a panorama's lattice warps to exactly the whole panorama's pixels the
   }
 }
 
+TEST_CASE("a simplified source numbers grid triangles as its own vertices, and refuses vertices it does not have") {
+  const std::unique_ptr<WarpSource> source = pillarRoomSource(SourceMesh::Simplified);
+  const SimplifiedTriangles& grid = source->simplifiedTriangles();
+  REQUIRE(grid.surface.size() + grid.sky.size() == 3 * size_t(source->triangleCount()));
+  const std::optional<std::vector<uint32_t>> mine = source->sourceTriangles(grid);
+  REQUIRE(mine);
+  REQUIRE(mine->size() == 3 * size_t(source->triangleCount()));
+  // The source's own triangles, surface then sky, are the same vertices.
+  for (uint32_t t = 0; t < source->triangleCount(); ++t) {
+    uint32_t v[3];
+    source->triangleVertices(t, v);
+    for (int k = 0; k < 3; ++k) CHECK((*mine)[3 * t + k] == v[k]);
+  }
+  // A pixel no simplified triangle uses (the first, in the top row, where
+  // the source looks straight up at the ceiling: no orphan either), and a
+  // number past the grid's pixels and poles.
+  std::vector<uint8_t> used(size_t(kWidth) * size_t(kWidth / 2) + 2, 0);
+  for (const std::vector<uint32_t>* list : {&grid.surface, &grid.sky}) {
+    for (const uint32_t v : *list) used[v] = 1;
+  }
+  const auto unused = std::find(used.begin(), used.end(), uint8_t(0));
+  REQUIRE(unused != used.end());
+  for (const uint32_t foreign : {uint32_t(unused - used.begin()), uint32_t(used.size())}) {
+    SimplifiedTriangles other = grid;
+    other.surface[1] = foreign;
+    CHECK_FALSE(source->sourceTriangles(other));
+  }
+}
+
 TEST_CASE("blend: nearest layer wins, layers within epsilon average with inverse-distance weights") {
   // Three one-pixel layers: A at 2.0 m, B at 2.05 m (within 5% of A), C at 3 m (behind).
   auto layer = [](glm::vec3 color, float distance) {

@@ -195,8 +195,9 @@ SimplifiedTriangles WarpSource::coarserTriangles(const Panorama& panorama, float
 std::optional<std::vector<uint32_t>> WarpSource::sourceTriangles(const SimplifiedTriangles& triangles) const {
   TRIWALK_CHECK(mesh_ == SourceMesh::Simplified, "only a simplified mesh numbers its vertices apart from the grid");
   // Each grid vertex's number here, by table: a walking mesh has a few
-  // hundred thousand indices, and a search per index took a sixth of the
-  // viewer's loader time per reference (docs/BENCHMARKS.md, 2026-11-28).
+  // hundred thousand indices, and a search per index took half as long as
+  // the grid's stretch test in the viewer's loader (docs/BENCHMARKS.md,
+  // 2026-11-28).
   constexpr uint32_t kNotMine = std::numeric_limits<uint32_t>::max();
   std::vector<uint32_t> numberOf(size_t(width_) * size_t(height_) + 2, kNotMine);
   for (uint32_t mine = 0; mine < uint32_t(gridVertex_.size()); ++mine) numberOf[gridVertex_[mine]] = mine;

@@ -10,12 +10,10 @@
 // in holes), and depth 1 in holes, 0 elsewhere, so that the fill's last
 // pass runs on the holes alone.
 #include "display.glsl"
-uniform sampler2D layer0;
-uniform sampler2D layer1;
-uniform sampler2D layer2;
-uniform sampler2D reliability0;
-uniform sampler2D reliability1;
-uniform sampler2D reliability2;
+#include "warp_layer_texel.glsl"
+uniform usampler2D layer0;
+uniform usampler2D layer1;
+uniform usampler2D layer2;
 uniform int layerCount;
 uniform vec3 weights;
 uniform bool reliabilityWeights;
@@ -32,8 +30,10 @@ layout(location = 1) out vec4 outColor;
 // d - z_front < epsilon * z_front is a * (1 + epsilon) > A.
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec4 value0 = texelFetch(layer0, pixel, 0), value1 = texelFetch(layer1, pixel, 0), value2 = texelFetch(layer2, pixel, 0);
-  vec3 inverse = vec3(value0.a, layerCount > 1 ? value1.a : -1.0, layerCount > 2 ? value2.a : -1.0);
+  WarpLayerValue value0 = warpLayerValue(texelFetch(layer0, pixel, 0)), value1 = warpLayerValue(texelFetch(layer1, pixel, 0)),
+                 value2 = warpLayerValue(texelFetch(layer2, pixel, 0));
+  vec3 inverse = vec3(value0.inverseDistance, layerCount > 1 ? value1.inverseDistance : -1.0,
+                      layerCount > 2 ? value2.inverseDistance : -1.0);
   float nearest = max(max(inverse.x, inverse.y), inverse.z);  // -1: no layer covers the pixel
   if (nearest < 0.0) {
     outValue = vec4(0.0, 0.0, 0.0, -1.0);
@@ -44,11 +44,9 @@ void main() {
   // Sky (0) blends with sky alone; a surface with the layers near it.
   vec3 inInterval = nearest > 0.0 ? vec3(greaterThan(inverse * (1.0 + epsilon), vec3(nearest)))
                                   : vec3(equal(inverse, vec3(0.0)));
-  vec3 reliabilities = reliabilityWeights ? vec3(texelFetch(reliability0, pixel, 0).r, texelFetch(reliability1, pixel, 0).r,
-                                                 texelFetch(reliability2, pixel, 0).r)
-                                          : vec3(1.0);
+  vec3 reliabilities = reliabilityWeights ? vec3(value0.reliability, value1.reliability, value2.reliability) : vec3(1.0);
   vec3 w = weights * reliabilities * inInterval;
-  vec3 blended = (w.x * value0.rgb + w.y * value1.rgb + w.z * value2.rgb) / (w.x + w.y + w.z);
+  vec3 blended = (w.x * value0.color + w.y * value1.color + w.z * value2.color) / (w.x + w.y + w.z);
   outValue = vec4(showSources ? inInterval : blended, nearest);
   outColor = displayColor(outValue.rgb);
   gl_FragDepth = 0.0;

@@ -3,6 +3,7 @@
 #include "core/support/errors.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <vector>
 
@@ -47,7 +48,8 @@ glm::mat4 pinholeViewProjection(const PinholeCamera& camera, float near) {
 }
 
 GpuWarper::GpuWarper(int width, int height)
-    : layerProgram_("warp_layer.vert", "warp_layer.frag"),
+    : gridLayerProgram_("warp_layer.vert", "warp_layer_grid.frag"),
+      simplifiedLayerProgram_("warp_layer.vert", "warp_layer_simplified.frag"),
       resolveProgram_("fullscreen.vert", "warp_resolve.frag"),
       pushProgram_("fullscreen.vert", "fill_push.frag"),
       pullProgram_("fullscreen.vert", "fill_pull.frag") {
@@ -65,15 +67,14 @@ void GpuWarper::resize(int width, int height) {
   glTextureStorage2D(depth_.get(), 1, GL_DEPTH_COMPONENT32F, width, height);
   for (size_t k = 0; k < layers_.size(); ++k) {
     layers_[k] = createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(layers_[k].get(), 1, GL_RGBA16F, width, height);
-    reliabilities_[k] = createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(reliabilities_[k].get(), 1, GL_R16F, width, height);
+    // Colour, 1 / distance and reliability packed (shaders/warp_layer_texel.glsl).
+    glTextureStorage2D(layers_[k].get(), 1, GL_RGBA32UI, width, height);
+    // An integer texture with a linear filter is incomplete (reads as 0).
+    glTextureParameteri(layers_[k].get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(layers_[k].get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     layerFramebuffers_[k] = createFramebuffer();
     glNamedFramebufferTexture(layerFramebuffers_[k].get(), GL_COLOR_ATTACHMENT0, layers_[k].get(), 0);
-    glNamedFramebufferTexture(layerFramebuffers_[k].get(), GL_COLOR_ATTACHMENT1, reliabilities_[k].get(), 0);
     glNamedFramebufferTexture(layerFramebuffers_[k].get(), GL_DEPTH_ATTACHMENT, depth_.get(), 0);
-    const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    glNamedFramebufferDrawBuffers(layerFramebuffers_[k].get(), 2, buffers);
     requireCompleteFramebuffer(layerFramebuffers_[k], "warp layer");
   }
   output_ = createTexture(GL_TEXTURE_2D);
@@ -116,27 +117,30 @@ void GpuWarper::resize(int width, int height) {
 void GpuWarper::drawLayer(const PinholeCamera& camera, const GpuPanorama& reference, int layer, float frameScale,
                           GpuFrameStatistics& statistics) {
   glBindFramebuffer(GL_FRAMEBUFFER, layerFramebuffers_[size_t(layer)].get());
-  const float uncovered[4] = {0.0f, 0.0f, 0.0f, -1.0f};
-  glClearNamedFramebufferfv(layerFramebuffers_[size_t(layer)].get(), GL_COLOR, 0, uncovered);
+  // 1 / distance -1: uncovered (warpLayerTexel).
+  const GLuint uncovered[4] = {0u, 0u, std::bit_cast<GLuint>(-1.0f), 0u};
+  glClearNamedFramebufferuiv(layerFramebuffers_[size_t(layer)].get(), GL_COLOR, 0, uncovered);
   const float farDepth = 0.0f;
   glClearNamedFramebufferfv(layerFramebuffers_[size_t(layer)].get(), GL_DEPTH, 0, &farDepth);
 
-  layerProgram_.set("panoramaSize", glm::ivec2(reference.width(), reference.height()));
   // A simplified mesh's vertices come from its buffer; the grid's from the
   // distance texture (an enabled attribute without a buffer is an error).
   const bool explicitVertices = reference.vertexBuffer() != 0;
-  layerProgram_.set("explicitVertices", explicitVertices ? 1 : 0);
+  ShaderProgram& layerProgram = explicitVertices ? simplifiedLayerProgram_ : gridLayerProgram_;
+  layerProgram.use();
+  layerProgram.set("panoramaSize", glm::ivec2(reference.width(), reference.height()));
+  layerProgram.set("explicitVertices", explicitVertices ? 1 : 0);
   if (explicitVertices) {
     glVertexArrayVertexBuffer(vertexArray_.get(), 0, reference.vertexBuffer(), 0, GLsizei(sizeof(glm::vec4)));
     glEnableVertexArrayAttrib(vertexArray_.get(), 0);
   } else {
     glDisableVertexArrayAttrib(vertexArray_.get(), 0);
   }
-  layerProgram_.set("panoramaYaw", reference.yaw());
-  layerProgram_.set("sourcePosition", reference.position());
-  layerProgram_.set("poleDistances", reference.poleDistances());
+  layerProgram.set("panoramaYaw", reference.yaw());
+  layerProgram.set("sourcePosition", reference.position());
+  layerProgram.set("poleDistances", reference.poleDistances());
   const glm::vec3 poleColors[2] = {reference.poleColor(0), reference.poleColor(1)};
-  layerProgram_.setArray("poleColors", poleColors, 2);
+  layerProgram.setArray("poleColors", poleColors, 2);
   glBindTextureUnit(0, reference.colorTexture());
   glBindTextureUnit(1, reference.distanceTexture());
 
@@ -187,11 +191,13 @@ GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<cons
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_GEQUAL);  // reversed depth; sky at exactly 0 still draws
-  layerProgram_.use();
-  layerProgram_.set("colorTexture", 0);
-  layerProgram_.set("distanceTexture", 1);
-  layerProgram_.set("viewProjection", pinholeViewProjection(camera, kNearPlane));
-  layerProgram_.set("cameraPosition", camera.position);
+  for (ShaderProgram* layerProgram : {&gridLayerProgram_, &simplifiedLayerProgram_}) {
+    layerProgram->use();
+    layerProgram->set("colorTexture", 0);
+    layerProgram->set("distanceTexture", 1);
+    layerProgram->set("viewProjection", pinholeViewProjection(camera, kNearPlane));
+    layerProgram->set("cameraPosition", camera.position);
+  }
   for (size_t k = 0; k < references.size(); ++k) {
     if (timePasses) glFinish();
     const auto start = std::chrono::steady_clock::now();
@@ -216,11 +222,9 @@ GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<cons
   glm::vec3 weightVector(0.0f);
   for (size_t k = 0; k < weights.size(); ++k) weightVector[int(k)] = weights[k];
   for (int k = 0; k < 3; ++k) {
-    const std::string layer = "layer" + std::to_string(k), reliability = "reliability" + std::to_string(k);
+    const std::string layer = "layer" + std::to_string(k);
     resolveProgram_.set(layer.c_str(), 2 + k);
     glBindTextureUnit(GLuint(2 + k), layers_[size_t(k)].get());
-    resolveProgram_.set(reliability.c_str(), 5 + k);
-    glBindTextureUnit(GLuint(5 + k), reliabilities_[size_t(k)].get());
   }
   resolveProgram_.set("layerCount", int(references.size()));
   resolveProgram_.set("weights", weightVector);

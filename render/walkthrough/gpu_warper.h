@@ -2,7 +2,8 @@
 // The GPU warp (docs/DESIGN.md, "Rendering"): the view of a pinhole camera from
 // up to three reference panoramas. Each reference is drawn as its grid mesh
 // into its own layer with a depth test (its nearest surface per pixel, as
-// the CPU reference keeps one layer per source) and its reliability; a
+// the CPU reference keeps one layer per source) and its reliability, in
+// one packed target (shaders/warp_layer_texel.glsl); a
 // full-screen resolve pass then blends the layers within epsilon * z_front
 // with the inverse-distance weights times reliability into a linear image
 // and the frame's display colours (holes marked, black, or left for the
@@ -74,11 +75,10 @@ private:
   void fillHoles(float epsilon);
 
   int width_ = 0, height_ = 0;
-  ShaderProgram layerProgram_;
+  ShaderProgram gridLayerProgram_, simplifiedLayerProgram_;
   ShaderProgram resolveProgram_;
   ShaderProgram pushProgram_, pullProgram_;
   std::array<GlTexture, 3> layers_;
-  std::array<GlTexture, 3> reliabilities_;  // each layer's reliability per pixel (R16F)
   GlTexture depth_;
   std::array<GlFramebuffer, 3> layerFramebuffers_;
   // Linear blend (rgb, inverse distance; -1 for holes), then the fill's

@@ -1,0 +1,35 @@
+// What every reference's layer writes (warp_layer_grid.frag,
+// warp_layer_simplified.frag): its nearest surface per pixel (the depth
+// test), linear colour and 1 / distance (interpolated perspective-correctly,
+// as the CPU reference does), and the layer's reliability at the pixel
+// (core/synthesis/warp_reliability.h, the same formula), packed into one
+// target (warp_layer_texel.glsl): on llvmpipe a second render target costs
+// more than the packing. 1 / distance -1 (the clear value) means
+// uncovered. The triangle's normal is the cross product of the world
+// point's screen derivatives, exact for a planar triangle since all four
+// pixels of a quad evaluate the same triangle; a point (no triangle) has
+// none and counts 1, as on the CPU.
+#include "warp_layer_texel.glsl"
+uniform vec3 sourcePosition;
+uniform vec3 cameraPosition;
+in float inverseDistance;
+in vec3 worldPoint;
+layout(location = 0) out uvec4 layer;
+
+const float kMinimumReliability = 1.0 / 1024.0;
+
+float warpReliability(vec3 point, vec3 normal) {
+  vec3 fromSource = point - sourcePosition, fromDestination = point - cameraPosition;
+  float sourceFacing = abs(dot(normal, fromSource));
+  float destinationFacing = abs(dot(normal, fromDestination));
+  if (!(destinationFacing > 0.0)) return 1.0;
+  float ratio = length(fromDestination) / length(fromSource);
+  float rho = sourceFacing / destinationFacing * ratio * ratio * ratio;
+  return rho > kMinimumReliability ? min(rho, 1.0) : kMinimumReliability;
+}
+
+void writeLayer(vec3 color) {
+  vec3 normal = cross(dFdx(worldPoint), dFdy(worldPoint));
+  float reliability = inverseDistance > 0.0 ? warpReliability(worldPoint, normal) : 1.0;
+  layer = warpLayerTexel(color, inverseDistance, reliability);
+}

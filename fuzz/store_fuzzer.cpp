@@ -73,7 +73,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   writeBytes(meshes.file(view, kWidth, simplifiedOptions().meshTolerancePixels), data, size);
   const WarpSource source = meshes.source(view, copy, simplifiedOptions());
   if (source.simplifiedTriangles().surface != expected.triangles.surface ||
-      source.simplifiedTriangles().sky != expected.triangles.sky) {
+      source.simplifiedTriangles().sky != expected.triangles.sky ||
+      source.simplifiedTriangles().orphans != expected.triangles.orphans) {
     std::abort();
   }
   return 0;

@@ -11,6 +11,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <fstream>
 
 using namespace triwalk;
@@ -29,6 +30,7 @@ WarpOptions simplifiedOptions(float tolerancePixels = 0.25f) {
 void requireSameSource(const WarpSource& a, const WarpSource& b, glm::vec3 destination) {
   REQUIRE(a.simplifiedTriangles().surface == b.simplifiedTriangles().surface);
   REQUIRE(a.simplifiedTriangles().sky == b.simplifiedTriangles().sky);
+  REQUIRE(a.simplifiedTriangles().orphans == b.simplifiedTriangles().orphans);
   REQUIRE(a.triangleCount() == b.triangleCount());
   const DestinationCamera camera = DestinationCamera::panorama(destination, kWidth, kWidth / 2);
   const WarpLayer layerA = warpToCamera(a, camera, WarpMethod::Mesh);
@@ -115,6 +117,38 @@ TEST_CASE("a view's simplified mesh is computed once, kept in the data set, and 
     requireSameSource(later.source(view, panorama, simplifiedOptions()), fresh, destination);
     CHECK(later.loaded() == 2);
   }
+}
+
+TEST_CASE("a source made from its stored mesh has the simplified source's vertices and orphans, bit for bit") {
+  testing::TemporaryDirectory directory;
+  const Dataset dataset = smallDataset(directory);
+  const ViewRecord& view = dataset.sample(2);
+  Panorama spiked = dataset.loadView(view);
+  // A pixel far nearer than its neighbours: the stretch test drops all six
+  // of its triangles, so it is splatted alone, an orphan. A source read
+  // from the store runs no stretch test and must know it all the same.
+  const uint32_t spike = 40 * kWidth + 100;
+  spiked.distance.pixels[spike] *= 0.3f;
+  const WarpSource fresh(spiked, view.position, degreesToRadians(view.yawDegrees), simplifiedOptions());
+  const std::vector<uint32_t>& orphans = fresh.simplifiedTriangles().orphans;
+  REQUIRE(std::binary_search(orphans.begin(), orphans.end(), spike));
+
+  SimplifiedMeshStore(dataset).source(view, spiked, simplifiedOptions());
+  SimplifiedMeshStore later(dataset);
+  const WarpSource read = later.source(view, spiked, simplifiedOptions());
+  REQUIRE(later.loaded() == 1);
+  REQUIRE(read.vertexCount() == fresh.vertexCount());
+  REQUIRE(read.pixelVertexCount() == fresh.pixelVertexCount());
+  int orphanVertices = 0;
+  for (uint32_t v = 0; v < fresh.vertexCount(); ++v) {
+    CHECK(read.point(v) == fresh.point(v));
+    CHECK(read.color(v) == fresh.color(v));
+    CHECK(read.atInfinity(v) == fresh.atInfinity(v));
+    CHECK(read.orphan(v) == fresh.orphan(v));
+    orphanVertices += fresh.orphan(v);
+  }
+  CHECK(size_t(orphanVertices) == orphans.size());
+  requireSameSource(read, fresh, dataset.sample(0).position);
 }
 
 TEST_CASE("the grid needs no store, and a store that cannot be written only costs the time") {

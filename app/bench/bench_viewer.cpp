@@ -108,14 +108,16 @@ void benchReferencePreparation(BenchTable& table, const Dataset& dataset, const 
         store.file(view, dataset.manifest().width, simplified.meshTolerancePixels, kMinimumWalkingScale));
   }
   for (const Way& way : ways) {
-    double decodeSeconds = 0.0, totalSeconds = 0.0;
+    double decodeSeconds = 0.0, sourceSeconds = 0.0, totalSeconds = 0.0;
     size_t triangles = 0, walkingTriangles = 0;
     for (const int sample : references) {
       const ViewRecord& view = dataset.sample(sample);
       const auto start = BenchClock::now();
       const Panorama panorama = dataset.loadView(view);
       decodeSeconds += secondsSince(start);
+      const auto sourceStart = BenchClock::now();
       const WarpSource source = way.source(view, panorama);
+      sourceSeconds += secondsSince(sourceStart);
       std::optional<WalkingMesh> walking;
       if (way.walking) {
         walking = WalkingMesh{store.walkingTriangles(view, panorama, source, simplified, kMinimumWalkingScale),
@@ -134,9 +136,9 @@ void benchReferencePreparation(BenchTable& table, const Dataset& dataset, const 
     const double n = double(references.size());
     table.add({"reference preparation on the viewer's loader thread (" + way.name + ")", size,
                formatNumber(1000.0 * totalSeconds / n, 0) + " ms",
-               "of which decoding the EXR " + formatNumber(1000.0 * decodeSeconds / n, 0) +
-                   " ms; then the warp source and the GPU tiles; " + formatNumber(double(triangles) / n, 0) +
-                   " triangles" +
+               "of which decoding the EXR " + formatNumber(1000.0 * decodeSeconds / n, 0) + " ms, the warp source " +
+                   formatNumber(1000.0 * sourceSeconds / n, 0) + " ms, then the walking mesh and the GPU tiles; " +
+                   formatNumber(double(triangles) / n, 0) + " triangles" +
                    (walkingTriangles > 0 ? ", walking mesh " + formatNumber(double(walkingTriangles) / n, 0) : "")});
   }
 }

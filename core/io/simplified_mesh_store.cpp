@@ -4,9 +4,11 @@
 #include "core/support/errors.h"
 #include "core/support/stable_hash.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <span>
 
 namespace triwalk {
@@ -14,8 +16,9 @@ namespace triwalk {
 namespace {
 
 // A file: the header (sizes: the surface and sky index counts), then the
-// surface and sky indices.
-constexpr std::array<char, 8> kMagic = {'T', 'W', 'M', 'E', 'S', 'H', '0', '1'};
+// surface and sky indices, then the orphans to the end of the file (none
+// for a walking mesh). Format 01 had no orphans: its files are made again.
+constexpr std::array<char, 8> kMagic = {'T', 'W', 'M', 'E', 'S', 'H', '0', '2'};
 
 // Everything the simplified triangles depend on.
 uint64_t sourceKey(const ViewRecord& view, const Panorama& panorama, const WarpOptions& options) {
@@ -37,6 +40,7 @@ uint64_t indicesChecksum(const SimplifiedTriangles& triangles) {
   StableHash hash;
   hash.addBytes(std::as_bytes(std::span<const uint32_t>(triangles.surface)));
   hash.addBytes(std::as_bytes(std::span<const uint32_t>(triangles.sky)));
+  hash.addBytes(std::as_bytes(std::span<const uint32_t>(triangles.orphans)));
   return hash.value();
 }
 
@@ -110,8 +114,9 @@ std::optional<SimplifiedTriangles> SimplifiedMeshStore::load(const std::filesyst
   if (!file) return std::nullopt;
   const auto [surfaceIndices, skyIndices] = file->header.sizes;
   const std::span<const std::byte> contents = file->contents();
-  if (surfaceIndices % 3 != 0 || skyIndices % 3 != 0 ||
-      contents.size() != (size_t(surfaceIndices) + size_t(skyIndices)) * sizeof(uint32_t)) {
+  const size_t triangleBytes = (size_t(surfaceIndices) + size_t(skyIndices)) * sizeof(uint32_t);
+  if (surfaceIndices % 3 != 0 || skyIndices % 3 != 0 || contents.size() < triangleBytes ||
+      (contents.size() - triangleBytes) % sizeof(uint32_t) != 0) {
     return std::nullopt;
   }
   const auto indicesAt = [&](size_t first, size_t count) {
@@ -123,11 +128,17 @@ std::optional<SimplifiedTriangles> SimplifiedMeshStore::load(const std::filesyst
   SimplifiedTriangles triangles;
   triangles.surface = indicesAt(0, surfaceIndices);
   triangles.sky = indicesAt(surfaceIndices, skyIndices);
+  triangles.orphans =
+      indicesAt(size_t(surfaceIndices) + size_t(skyIndices), (contents.size() - triangleBytes) / sizeof(uint32_t));
   if (indicesChecksum(triangles) != file->header.checksum) return std::nullopt;
-  for (const std::vector<uint32_t>* list : {&triangles.surface, &triangles.sky}) {
+  for (const std::vector<uint32_t>* list : {&triangles.surface, &triangles.sky, &triangles.orphans}) {
     for (const uint32_t v : *list) {
       if (v >= vertexCount) return std::nullopt;
     }
+  }
+  if (std::adjacent_find(triangles.orphans.begin(), triangles.orphans.end(), std::greater_equal<>()) !=
+      triangles.orphans.end()) {
+    return std::nullopt;
   }
   return triangles;
 }
@@ -135,7 +146,9 @@ std::optional<SimplifiedTriangles> SimplifiedMeshStore::load(const std::filesyst
 void SimplifiedMeshStore::store(const std::filesystem::path& path, uint64_t key, const SimplifiedTriangles& triangles) {
   const DerivedFileHeader header{
       kMagic, key, indicesChecksum(triangles), {uint32_t(triangles.surface.size()), uint32_t(triangles.sky.size())}};
-  files_.write(path, header, {std::as_bytes(std::span(triangles.surface)), std::as_bytes(std::span(triangles.sky))});
+  files_.write(path, header,
+               {std::as_bytes(std::span(triangles.surface)), std::as_bytes(std::span(triangles.sky)),
+                std::as_bytes(std::span(triangles.orphans))});
 }
 
 }  // namespace triwalk

@@ -45,6 +45,44 @@ const char* sourceMeshName(SourceMesh mesh) { return mesh == SourceMesh::Grid ? 
 
 // ---------------------------------------------------------------- source --
 
+namespace {
+
+struct SourceVertex {
+  glm::vec3 point;  // world point, or unit direction when at infinity
+  glm::vec3 color;
+  bool infinite = false;
+};
+
+SourceVertex pixelVertex(const Panorama& panorama, const EquirectProjection& projection, glm::vec3 position, int u,
+                         int v) {
+  const size_t i = size_t(v) * size_t(panorama.width()) + size_t(u);
+  const glm::vec3 direction = projection.pixelDirection(u, v);
+  const float d = panorama.distance.pixels[i];
+  const bool infinite = std::isinf(d);
+  return {infinite ? direction : position + d * direction, panorama.color.pixels[i], infinite};
+}
+
+// Pole vertices close the caps above the first and below the last row:
+// the mean of that row's points and colors, at infinity if any is.
+SourceVertex poleVertex(const Panorama& panorama, glm::vec3 position, int pole) {
+  const int width = panorama.width();
+  const size_t first = size_t(pole == 0 ? 0 : panorama.height() - 1) * size_t(width);
+  bool anyInfinite = false;
+  double distanceSum = 0.0;
+  glm::dvec3 colorSum(0.0);
+  for (int u = 0; u < width; ++u) {
+    const float d = panorama.distance.pixels[first + size_t(u)];
+    anyInfinite |= std::isinf(d);
+    distanceSum += anyInfinite ? 0.0 : double(d);
+    colorSum += glm::dvec3(panorama.color.pixels[first + size_t(u)]);
+  }
+  const glm::vec3 up(0.0f, 0.0f, pole == 0 ? 1.0f : -1.0f);
+  return {anyInfinite ? up : position + float(distanceSum / width) * up, glm::vec3(colorSum / double(width)),
+          anyInfinite};
+}
+
+}  // namespace
+
 WarpSource::WarpSource(const Panorama& panorama, glm::vec3 position, float yawRadians, const WarpOptions& options,
                        std::optional<SimplifiedTriangles> stored)
     : width_(panorama.width()),
@@ -52,42 +90,30 @@ WarpSource::WarpSource(const Panorama& panorama, glm::vec3 position, float yawRa
       position_(position),
       projection_{panorama.width(), panorama.height(), yawRadians} {
   TRIWALK_CHECK(width_ >= 2 && height_ >= 2, "panorama too small to warp");
+  if (options.mesh == SourceMesh::Simplified && stored) {
+    // A stored mesh names its orphans too: the grid's points and stretch
+    // test, most of a reference's preparation in the viewer's loader
+    // (docs/BENCHMARKS.md, 2026-11-28), are not needed.
+    adoptSimplified(panorama, std::move(*stored));
+    return;
+  }
   const size_t pixels = size_t(width_) * size_t(height_);
   points_.resize(pixels + 2);
   infinite_.resize(pixels + 2);
   colors_.resize(pixels + 2);
+  const auto setVertex = [&](size_t i, const SourceVertex& vertex) {
+    points_[i] = vertex.point;
+    infinite_[i] = vertex.infinite;
+    colors_[i] = vertex.color;
+  };
   tbb::parallel_for(tbb::blocked_range<int>(0, height_), [&](const tbb::blocked_range<int>& rows) {
     for (int v = rows.begin(); v != rows.end(); ++v) {
       for (int u = 0; u < width_; ++u) {
-        const size_t i = size_t(v) * size_t(width_) + size_t(u);
-        const glm::vec3 direction = projection_.pixelDirection(u, v);
-        const float d = panorama.distance.pixels[i];
-        infinite_[i] = std::isinf(d);
-        points_[i] = std::isinf(d) ? direction : position + d * direction;
-        colors_[i] = panorama.color.pixels[i];
+        setVertex(size_t(v) * size_t(width_) + size_t(u), pixelVertex(panorama, projection_, position, u, v));
       }
     }
   });
-
-  // Pole vertices close the caps above the first and below the last row:
-  // the mean of that row's points and colors, at infinity if any is.
-  for (int pole = 0; pole < 2; ++pole) {
-    const int row = pole == 0 ? 0 : height_ - 1;
-    const size_t first = size_t(row) * size_t(width_);
-    bool anyInfinite = false;
-    double distanceSum = 0.0;
-    glm::dvec3 colorSum(0.0);
-    for (int u = 0; u < width_; ++u) {
-      anyInfinite |= infinite_[first + size_t(u)] != 0;
-      distanceSum += anyInfinite ? 0.0 : double(panorama.distance.pixels[first + size_t(u)]);
-      colorSum += glm::dvec3(colors_[first + size_t(u)]);
-    }
-    const glm::vec3 up(0.0f, 0.0f, pole == 0 ? 1.0f : -1.0f);
-    const size_t vertex = pixels + size_t(pole);
-    infinite_[vertex] = anyInfinite;
-    points_[vertex] = anyInfinite ? up : position + float(distanceSum / width_) * up;
-    colors_[vertex] = glm::vec3(colorSum / double(width_));
-  }
+  for (int pole = 0; pole < 2; ++pole) setVertex(pixels + size_t(pole), poleVertex(panorama, position, pole));
 
   const uint32_t triangles = 2 * uint32_t(width_) * uint32_t(height_ - 1) + 2 * uint32_t(width_);
   kept_.resize(triangles);
@@ -135,7 +161,11 @@ WarpSource::WarpSource(const Panorama& panorama, glm::vec3 position, float yawRa
   for (size_t i = 0; i < points_.size(); ++i) orphan_[i] &= uint8_t(!infinite_[i]);
   pixelVertexCount_ = uint32_t(pixels);
   if (options.mesh == SourceMesh::Simplified) {
-    adoptSimplified(panorama, stored ? std::move(*stored) : simplifyKept(panorama, options.meshTolerancePixels));
+    SimplifiedTriangles simplified = simplifyKept(panorama, options.meshTolerancePixels);
+    for (uint32_t v = 0; v < uint32_t(orphan_.size()); ++v) {
+      if (orphan_[v]) simplified.orphans.push_back(v);
+    }
+    adoptSimplified(panorama, std::move(simplified));
   }
 }
 
@@ -160,7 +190,7 @@ float nearSurfaceDistance(const Panorama& panorama) {
 SimplifiedTriangles simplifyWithin(const SimplifiedTriangles& triangles, std::span<const glm::vec3> points,
                                    float tolerancePixels, float pixelAngle, float nearDistance) {
   return {simplifyTriangles(triangles.surface, points, tolerancePixels * pixelAngle * nearDistance),
-          simplifyTriangles(triangles.sky, points, tolerancePixels * pixelAngle)};
+          simplifyTriangles(triangles.sky, points, tolerancePixels * pixelAngle), triangles.orphans};
 }
 
 }  // namespace
@@ -182,7 +212,7 @@ SimplifiedTriangles WarpSource::coarserTriangles(const Panorama& panorama, float
   TRIWALK_CHECK(mesh_ == SourceMesh::Simplified, "only a simplified mesh is simplified further");
   // triangles_ holds the surface's, then the sky's (adoptSimplified).
   const auto skyStart = triangles_.begin() + std::ptrdiff_t(simplifiedTriangles_.surface.size());
-  const SimplifiedTriangles mine{{triangles_.begin(), skyStart}, {skyStart, triangles_.end()}};
+  const SimplifiedTriangles mine{{triangles_.begin(), skyStart}, {skyStart, triangles_.end()}, {}};
   const float pixelAngle = 2.0f * float(std::numbers::pi) / float(width_);
   SimplifiedTriangles coarser =
       simplifyWithin(mine, points_, extraTolerancePixels, pixelAngle, nearSurfaceDistance(panorama));
@@ -213,38 +243,38 @@ std::optional<std::vector<uint32_t>> WarpSource::sourceTriangles(const Simplifie
 }
 
 void WarpSource::adoptSimplified(const Panorama& panorama, SimplifiedTriangles triangles) {
-  const std::vector<uint32_t>& surface = triangles.surface;
-  const std::vector<uint32_t>& sky = triangles.sky;
   // Keep the vertices the triangles and the orphan splats use, pixels
-  // first in pixel order, then the poles.
+  // first in pixel order, then the poles, each made from the panorama.
   const uint32_t pixels = uint32_t(width_) * uint32_t(height_);
-  std::vector<uint8_t> used(points_.size(), 0);
-  for (const uint32_t v : surface) used[v] = 1;
-  for (const uint32_t v : sky) used[v] = 1;
-  for (size_t v = 0; v < orphan_.size(); ++v) used[v] |= orphan_[v];
+  std::vector<uint8_t> used(pixels + 2, 0), orphan(pixels + 2, 0);
+  for (const std::vector<uint32_t>* list : {&triangles.surface, &triangles.sky}) {
+    for (const uint32_t v : *list) used[v] = 1;
+  }
+  for (const uint32_t v : triangles.orphans) used[v] = orphan[v] = 1;
   constexpr uint32_t kUnused = std::numeric_limits<uint32_t>::max();
-  std::vector<uint32_t> compact(points_.size(), kUnused);
-  std::vector<glm::vec3> points, colors;
-  std::vector<uint8_t> infinite, orphan;
+  std::vector<uint32_t> compact(pixels + 2, kUnused);
+  points_.clear();
+  colors_.clear();
+  infinite_.clear();
+  orphan_.clear();
   gridVertex_.clear();
-  for (uint32_t v = 0; v < uint32_t(points_.size()); ++v) {
+  for (uint32_t v = 0; v < pixels + 2; ++v) {
     if (!used[v]) continue;
-    compact[v] = uint32_t(points.size());
+    compact[v] = uint32_t(points_.size());
     gridVertex_.push_back(v);
-    points.push_back(points_[v]);
-    colors.push_back(colors_[v]);
-    infinite.push_back(infinite_[v]);
-    orphan.push_back(orphan_[v]);
+    const SourceVertex vertex =
+        v < pixels ? pixelVertex(panorama, projection_, position_, int(v % uint32_t(width_)), int(v / uint32_t(width_)))
+                   : poleVertex(panorama, position_, int(v - pixels));
+    points_.push_back(vertex.point);
+    colors_.push_back(vertex.color);
+    infinite_.push_back(vertex.infinite);
+    orphan_.push_back(orphan[v]);
   }
   pixelVertexCount_ = uint32_t(std::count(used.begin(), used.begin() + pixels, uint8_t(1)));
   triangles_.clear();
-  for (const std::vector<uint32_t>* list : {&surface, &sky}) {
+  for (const std::vector<uint32_t>* list : {&triangles.surface, &triangles.sky}) {
     for (const uint32_t v : *list) triangles_.push_back(compact[v]);
   }
-  points_ = std::move(points);
-  colors_ = std::move(colors);
-  infinite_ = std::move(infinite);
-  orphan_ = std::move(orphan);
   kept_.clear();
   keptCount_ = uint32_t(triangles_.size() / 3);
   mesh_ = SourceMesh::Simplified;

@@ -78,9 +78,12 @@ const char* sourceMeshName(SourceMesh mesh);
 // A source's simplified triangles in its grid's vertex numbering, surface
 // and sky apart: what meshoptimizer computes (the costly part of preparing
 // a simplified source) and what a data set's mesh store keeps
-// (core/io/simplified_mesh_store.h).
+// (core/io/simplified_mesh_store.h). With them, the source's orphans
+// (WarpSource::orphan), ascending: the grid's stretch test finds them, so
+// a source made from stored triangles needs no stretch test.
 struct SimplifiedTriangles {
   std::vector<uint32_t> surface, sky;
+  std::vector<uint32_t> orphans;
 };
 
 // A source panorama prepared for warping: world points of its pixels and
@@ -89,9 +92,10 @@ struct SimplifiedTriangles {
 // sample once.
 class WarpSource {
 public:
-  // With a simplified mesh, `stored` (when given) are the triangles an
-  // earlier simplification of this same source computed; they are used as
-  // they are instead of simplifying again.
+  // With a simplified mesh, `stored` (when given) are the triangles and
+  // orphans an earlier simplification of this same source computed; they
+  // are used as they are instead of simplifying again, and only the
+  // vertices they use are made.
   WarpSource(const Panorama& panorama, glm::vec3 position, float yawRadians, const WarpOptions& options,
              std::optional<SimplifiedTriangles> stored = std::nullopt);
 

@@ -34,6 +34,16 @@ double peakResidentGigabytes() {
   return double(usage.ru_maxrss) / (1024.0 * 1024.0);  // ru_maxrss is in KiB on Linux
 }
 
+rusage processUsage() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage;
+}
+
+double seconds(const timeval& time) {
+  return double(time.tv_sec) + 1e-6 * double(time.tv_usec);
+}
+
 }  // namespace
 
 std::string BenchSelectionErrors::describe() const { return describeErrorPanorama(width, stride); }
@@ -53,7 +63,11 @@ BenchDecimation runBenchDecimation(const Dataset& dataset, const BenchSelectionE
   // What `decimate --max-error 1.85` (the main job) runs: the default
   // cost, boundary and area weights, then the refinement.
   result.settings.decimation.maxError = 1.85;
+  const rusage before = processUsage();
   result.run = selectReferences(dataset, errors, result.settings, kQuiet);
+  const rusage after = processUsage();
+  result.pageFaults = uint64_t(after.ru_minflt - before.ru_minflt) + uint64_t(after.ru_majflt - before.ru_majflt);
+  result.systemSeconds = seconds(after.ru_stime) - seconds(before.ru_stime);
   result.peakGigabytes = peakResidentGigabytes();
   result.layersComputed = errors.layerCache().misses();
   result.layersReused = errors.layerCache().hits();
@@ -83,11 +97,12 @@ void benchDecimate(BenchTable& table, const Scene& scene, const std::string& dat
   const std::string cost = collapseCostName(decimation.settings.decimation.cost);
   table.add({"decimation wall time (edge collapse, " + cost + " cost, to the threshold " +
                  formatNumber(decimation.settings.decimation.maxError, 2) + ")",
-             size,
-             formatNumber(run.collapseSeconds, 1) + " s",
+             size, formatNumber(run.collapseSeconds, 1) + " s",
              "initial edge costs " + formatNumber(run.costingSeconds, 1) + " s, " + std::to_string(run.collapses) +
                  " collapses to " + std::to_string(run.initialSamples - int(run.collapses)) +
-                 " samples; loading the panoramas " + formatNumber(decimation.loadSeconds, 1) + " s more"});
+                 " samples; loading the panoramas " + formatNumber(decimation.loadSeconds, 1) +
+                 " s more; with the refinement, the kernel's page faults " + std::to_string(decimation.pageFaults) +
+                 " and system CPU " + formatNumber(decimation.systemSeconds, 1) + " s"});
   // The viewer's live decimation runs the same decimator, one collapse at
   // a time after the initial costing.
   const double collapsing = run.collapseSeconds - run.costingSeconds;

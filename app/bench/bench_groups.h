@@ -62,6 +62,10 @@ struct BenchDecimation {
   uint64_t layersComputed = 0, layersReused = 0;
   uint64_t layersWarpedAgain = 0;  // of layersComputed, those the cache had dropped for its budget
   double layerBudgetGigabytes = 0.0;
+  // The kernel's share of the selection (getrusage, the whole process):
+  // page faults and system CPU time, most of it faulting in fresh layers.
+  uint64_t pageFaults = 0;
+  double systemSeconds = 0.0;
 };
 BenchDecimation runBenchDecimation(const Dataset& dataset, const BenchSelectionErrors& errors);
 

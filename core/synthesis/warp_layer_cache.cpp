@@ -2,6 +2,7 @@
 
 #include "core/image/half_float.h"
 #include "core/support/errors.h"
+#include "core/support/huge_page_blocks.h"
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -25,9 +26,10 @@ size_t physicalMemoryBytes() {
   return pages > 0 && pageSize > 0 ? size_t(pages) * size_t(pageSize) : size_t(4) << 30;
 }
 
-// Hands the pages the C library keeps free back to the kernel, which
-// does not count them available until then.
+// Hands the pages the C library and the layers' blocks keep free back to
+// the kernel, which does not count them available until then.
 void returnFreePagesToKernel() {
+  HugePageBlocks::shared().returnFreeToKernel();
 #if defined(__GLIBC__)
   malloc_trim(0);
 #endif
@@ -36,32 +38,47 @@ void returnFreePagesToKernel() {
 }  // namespace
 
 CompactLayer::CompactLayer(const WarpLayer& layer)
-    : pixelCount_(layer.covered.size()), values_(4 * pixelCount_), reliability_(layer.reliability.size()) {
-  std::vector<float> values(values_.size());
-  float* red = values.data();
-  float* green = red + pixelCount_;
-  float* blue = green + pixelCount_;
-  float* distance = blue + pixelCount_;
-  for (size_t i = 0; i < pixelCount_; ++i) {
-    const glm::vec3 color = layer.color.pixels[i];
-    red[i] = color.r;
-    green[i] = color.g;
-    blue[i] = color.b;
-    distance[i] = layer.covered[i] ? layer.distance.pixels[i] : std::numeric_limits<float>::quiet_NaN();
+    : pixelCount_(layer.covered.size()),
+      hasReliability_(!layer.reliability.empty()),
+      halves_(static_cast<uint16_t*>(HugePageBlocks::shared().allocate(std::max<size_t>(bytes(), 1)))) {
+  TRIWALK_CHECK(!hasReliability_ || layer.reliability.size() == pixelCount_, "a reliability for every pixel");
+  uint16_t* const red = halves_;
+  uint16_t* const green = red + pixelCount_;
+  uint16_t* const blue = green + pixelCount_;
+  uint16_t* const distance = blue + pixelCount_;
+  // A chunk of pixels at a time, its planes in floats, then converted as
+  // arrays (the processor's half instructions take eight at a time).
+  constexpr size_t kChunk = 1024;
+  float floats[4][kChunk];
+  for (size_t first = 0; first < pixelCount_; first += kChunk) {
+    const size_t count = std::min(kChunk, pixelCount_ - first);
+    for (size_t k = 0; k < count; ++k) {
+      const size_t i = first + k;
+      const glm::vec3 color = layer.color.pixels[i];
+      floats[0][k] = color.r;
+      floats[1][k] = color.g;
+      floats[2][k] = color.b;
+      floats[3][k] = layer.covered[i] ? layer.distance.pixels[i] : std::numeric_limits<float>::quiet_NaN();
+    }
+    uint16_t* const planes[4] = {red, green, blue, distance};
+    for (size_t p = 0; p < 4; ++p) floatsToHalves(std::span(floats[p], count), std::span(planes[p] + first, count));
   }
-  floatsToHalves(values, values_);
-  floatsToHalves(layer.reliability, reliability_);
+  if (hasReliability_) floatsToHalves(layer.reliability, std::span(halves_ + 4 * pixelCount_, pixelCount_));
+}
+
+CompactLayer::~CompactLayer() {
+  HugePageBlocks::shared().free(halves_, std::max<size_t>(bytes(), 1));
 }
 
 void CompactLayer::decodeRow(size_t first, size_t count, DecodedLayerRow& row) const {
   TRIWALK_CHECK(first + count <= pixelCount_, "a row inside the layer");
   std::vector<float>* planes[4] = {&row.red, &row.green, &row.blue, &row.distance};
-  for (size_t plane = 0; plane < 4; ++plane) {
-    planes[plane]->resize(count);
-    halvesToFloats(std::span(values_).subspan(plane * pixelCount_ + first, count), *planes[plane]);
+  for (size_t p = 0; p < 4; ++p) {
+    planes[p]->resize(count);
+    halvesToFloats(plane(p).subspan(first, count), *planes[p]);
   }
-  row.reliability.resize(reliability_.empty() ? 0 : count);
-  if (!reliability_.empty()) halvesToFloats(std::span(reliability_).subspan(first, count), row.reliability);
+  row.reliability.resize(hasReliability_ ? count : 0);
+  if (hasReliability_) halvesToFloats(plane(4).subspan(first, count), row.reliability);
 }
 
 size_t WarpLayerCache::bytes() const {

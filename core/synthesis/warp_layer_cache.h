@@ -16,6 +16,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -39,22 +40,31 @@ struct DecodedLayerRow {
 
 // A warped layer in half floats: linear r, g, b and the distance (NaN
 // where the source put nothing, +inf for sky), and the reliability when
-// the layer has one; each a plane of its own, read a row at a time.
+// the layer has one; each a plane of its own, read a row at a time. The
+// planes are one block of the process's huge-page blocks
+// (core/support/huge_page_blocks.h): a decimation keeps gigabytes of
+// layers, and their page faults were a tenth of its CPU.
 class CompactLayer {
 public:
   explicit CompactLayer(const WarpLayer& layer);
+  ~CompactLayer();
+  CompactLayer(const CompactLayer&) = delete;
+  CompactLayer& operator=(const CompactLayer&) = delete;
 
   // Pixels [first, first + count) into row (the whole layer: first 0,
   // count pixelCount()).
   void decodeRow(size_t first, size_t count, DecodedLayerRow& row) const;
 
   size_t pixelCount() const { return pixelCount_; }
-  size_t bytes() const { return (values_.size() + reliability_.size()) * sizeof(uint16_t); }
+  size_t bytes() const { return planeCount() * pixelCount_ * sizeof(uint16_t); }
 
 private:
+  size_t planeCount() const { return hasReliability_ ? 5 : 4; }
+  std::span<const uint16_t> plane(size_t index) const { return {halves_ + index * pixelCount_, pixelCount_}; }
+
   size_t pixelCount_;
-  std::vector<uint16_t> values_;  // half floats' bits: the planes red, green, blue, distance
-  std::vector<uint16_t> reliability_;
+  bool hasReliability_;
+  uint16_t* halves_;  // half floats' bits: the planes red, green, blue, distance, then the reliability if any
 };
 
 class WarpLayerCache {

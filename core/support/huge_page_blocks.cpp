@@ -74,8 +74,7 @@ void* HugePageBlocks::allocate(size_t bytes) {
   TRIWALK_CHECK(bytes > 0, "a block of at least one byte");
   std::lock_guard lock(mutex_);
   SizeClass& sizeClass = classes_[bytes];
-  sizeClass.blockBytes = roundUp(bytes, kBlockAlignment);
-  usedBytes_ += sizeClass.blockBytes;
+  if (sizeClass.blockBytes == 0) sizeClass.blockBytes = roundUp(bytes, kBlockAlignment);
   // A freed block whose pages are still faulted in first, then one whose
   // pages went back to the kernel, then a fresh one.
   void* block = nullptr;
@@ -90,6 +89,7 @@ void* HugePageBlocks::allocate(size_t bytes) {
     sizeClass.next += sizeClass.blockBytes;
   }
   ASAN_UNPOISON_MEMORY_REGION(block, bytes);
+  usedBytes_ += sizeClass.blockBytes;  // only once the block is given: mapAnother may throw
   return block;
 }
 

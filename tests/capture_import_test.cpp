@@ -28,8 +28,8 @@ std::vector<SourceView> scan(CaptureLayout layout, const std::filesystem::path& 
   return scanCaptureLayout(layout, in, options);
 }
 
-ImportReport importQuietly(const std::vector<SourceView>& views, const std::filesystem::path& out,
-                           ImportOptions options = {}) {
+CaptureImportReport importQuietly(const std::vector<SourceView>& views, const std::filesystem::path& out,
+                                  CaptureImportOptions options = {}) {
   options.quiet = true;
   return importCapture(views, options, "test", nlohmann::json::object(), out);
 }
@@ -139,9 +139,9 @@ TEST_CASE("export to each layout and import back: the same positions, yaws and i
     const std::filesystem::path exported = directory / (std::string("export_") + captureLayoutName(test.layout));
     const std::filesystem::path imported = directory / (std::string("import_") + captureLayoutName(test.layout));
     CHECK(exportDataset(original, test.layout, exported, true) == 11);
-    ImportOptions options;
+    CaptureImportOptions options;
     options.probesFraction = 0.0;
-    const ImportReport report = importQuietly(scan(test.layout, exported), imported, options);
+    const CaptureImportReport report = importQuietly(scan(test.layout, exported), imported, options);
     CHECK(report.samples == 11);
     CHECK(report.resampledViews == 0);
     const Dataset back = Dataset::open(imported);
@@ -176,7 +176,7 @@ TEST_CASE("an import keeps what a decimation reads of each view, bit for bit wha
   testing::writeAnalyticDataset(directory / "data", 2, 3, 512, 0);
   const Dataset original = Dataset::open(directory / "data");
   REQUIRE(exportDataset(original, CaptureLayout::Folder, directory / "exported", true) == 6);
-  ImportOptions options;
+  CaptureImportOptions options;
   options.probesFraction = 0.0;
   importQuietly(scan(CaptureLayout::Folder, directory / "exported"), directory / "imported", options);
   const Dataset back = Dataset::open(directory / "imported");
@@ -209,10 +209,10 @@ TEST_CASE("a tilted camera's panorama is resampled upright: it matches the uprig
   std::ofstream(in / "poses.csv") << "name,m00,m01,m02,m03,m10,m11,m12,m13,m20,m21,m22,m23,m30,m31,m32,m33\n"
                                   << matrixRow("tilted", rotation, position) << matrixRow("a", glm::mat3(1.0f), {1.0f, 0.0f, 1.5f})
                                   << matrixRow("b", glm::mat3(1.0f), {0.0f, 1.0f, 1.5f});
-  ImportOptions options;
+  CaptureImportOptions options;
   options.probesFraction = 0.0;
   options.depthKind = DepthKind::CubeZ;
-  const ImportReport report = importQuietly(scan(CaptureLayout::Folder, in), directory / "data", options);
+  const CaptureImportReport report = importQuietly(scan(CaptureLayout::Folder, in), directory / "data", options);
   CHECK(report.resampledViews == 1);
   CHECK(report.largestTiltDegrees == doctest::Approx(12.8).epsilon(0.02));
 
@@ -262,13 +262,14 @@ TEST_CASE("folder layout: 16-bit millimetre depth of the horizontal kind, y-up p
   std::ofstream(in / "poses.csv") << poses;
   LayoutOptions layoutOptions;
   layoutOptions.up = UpAxis::PlusY;
-  ImportOptions options;
+  CaptureImportOptions options;
   options.up = UpAxis::PlusY;
   options.metresPerUnit = 0.01;
   options.depthKind = DepthKind::Horizontal;
   options.probesFraction = 0.3;
   options.seed = 5;
-  const ImportReport report = importQuietly(scan(CaptureLayout::Folder, in, layoutOptions), directory / "data", options);
+  const CaptureImportReport report =
+      importQuietly(scan(CaptureLayout::Folder, in, layoutOptions), directory / "data", options);
   CHECK(report.samples == 7);
   CHECK(report.probes == 3);
   const Dataset dataset = Dataset::open(directory / "data");
@@ -287,7 +288,8 @@ TEST_CASE("folder layout: 16-bit millimetre depth of the horizontal kind, y-up p
     }
   }
   // The same seed holds out the same views; probes are never samples.
-  const ImportReport again = importQuietly(scan(CaptureLayout::Folder, in, layoutOptions), directory / "again", options);
+  const CaptureImportReport again =
+      importQuietly(scan(CaptureLayout::Folder, in, layoutOptions), directory / "again", options);
   CHECK(again.probes == 3);
   CHECK(Dataset::open(directory / "again").manifest().capture["names"] == names);
   for (const auto& probe : names["probes"]) {
@@ -308,7 +310,7 @@ TEST_CASE("bad captures give one line naming the file, before any image is conve
     return in;
   };
   const auto importFolder = [&](const std::filesystem::path& in) {
-    ImportOptions options;
+    CaptureImportOptions options;
     options.probesFraction = 0.0;
     importQuietly(scan(CaptureLayout::Folder, in), out, options);
   };
@@ -392,7 +394,7 @@ TEST_CASE("bad captures give one line naming the file, before any image is conve
   }
   SUBCASE("too few views left as samples") {
     const std::filesystem::path in = freshCapture();
-    ImportOptions options;
+    CaptureImportOptions options;
     options.probesFraction = 0.5;
     testing::requireInputError([&] { importQuietly(scan(CaptureLayout::Folder, in), out, options); }, "--probes-fraction",
                                "at least 3");

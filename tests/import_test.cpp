@@ -24,8 +24,8 @@ const std::filesystem::path kLevels = "/usr/share/games/openarena/baseoa/z_oacmp
 
 TEST_CASE("the IFC house loads with its triangles, in metres, z up") {
   REQUIRE_MESSAGE(std::filesystem::exists(kHouse), "install assimp-testmodels (scripts/install-deps.sh test)");
-  ImportReport report;
-  const Scene scene = importScene(kHouse, ImportOptions{}, report);
+  SceneImportReport report;
+  const Scene scene = importScene(kHouse, SceneImportOptions{}, report);
   CHECK(scene.triangleCount() == 35906);
   glm::vec3 lower, upper;
   scene.bounds(lower, upper);
@@ -42,8 +42,8 @@ TEST_CASE("the IFC house loads with its triangles, in metres, z up") {
 
 TEST_CASE("the house's automatic region: its ground floor from room to room, every sample enclosed with a floor below") {
   REQUIRE(std::filesystem::exists(kHouse));
-  ImportReport report;
-  const Scene scene = importScene(kHouse, ImportOptions{}, report);
+  SceneImportReport report;
+  const Scene scene = importScene(kHouse, SceneImportOptions{}, report);
   auto context = createHeadlessContext();
   const WalkableRegionProposal proposal = proposeWalkableRegion(scene, {}, kHouse.string());
   INFO(proposal.reason);
@@ -76,8 +76,8 @@ TEST_CASE("zero-area triangles of the house leave no NaN in a capture") {
   // interpolated positions; they used to shade to NaN colours, which the
   // EXR writer refuses.
   REQUIRE(std::filesystem::exists(kHouse));
-  ImportReport report;
-  const Scene scene = importScene(kHouse, ImportOptions{}, report);
+  SceneImportReport report;
+  const Scene scene = importScene(kHouse, SceneImportOptions{}, report);
   auto context = createHeadlessContext();
   PanoramaCapturer capturer(scene, 1024);
   const Panorama panorama = capturer.capture({4.25f + 2.0f / 14.0f * 14.0f, 0.75f + 4.5f / 29.0f, 1.6f});
@@ -88,9 +88,9 @@ TEST_CASE("zero-area triangles of the house leave no NaN in a capture") {
 
 TEST_CASE("the Quake 3 level oacmpdm3 loads by name with its textures, lightmaps and spawn points") {
   REQUIRE_MESSAGE(std::filesystem::exists(kLevels), "install openarena-oacmp1 (scripts/install-deps.sh test)");
-  ImportOptions options;
+  SceneImportOptions options;
   options.map = "oacmpdm3";
-  ImportReport report;
+  SceneImportReport report;
   const Scene scene = importScene(kLevels, options, report);
   CHECK(report.map == "oacmpdm3");
   CHECK(scene.triangleCount() > 5000);
@@ -113,20 +113,20 @@ TEST_CASE("the Quake 3 level oacmpdm3 loads by name with its textures, lightmaps
 
 TEST_CASE("bad scene files give a one-line error naming the file") {
   testing::TemporaryDirectory directory;
-  ImportReport report;
-  testing::requireInputError([&] { importScene(directory / "missing.obj", ImportOptions{}, report); }, "missing.obj",
-                             "does not exist");
+  SceneImportReport report;
+  testing::requireInputError([&] { importScene(directory / "missing.obj", SceneImportOptions{}, report); },
+                             "missing.obj", "does not exist");
   std::ofstream(directory / "corrupt.obj") << "v 1 2\nf 1 2 3 4 5\nthis is not a mesh\n";
-  testing::requireInputError([&] { importScene(directory / "corrupt.obj", ImportOptions{}, report); }, "corrupt.obj",
-                             "cannot import scene");
+  testing::requireInputError([&] { importScene(directory / "corrupt.obj", SceneImportOptions{}, report); },
+                             "corrupt.obj", "cannot import scene");
   std::ofstream(directory / "scene.xyz") << "nothing Assimp knows";
-  testing::requireInputError([&] { importScene(directory / "scene.xyz", ImportOptions{}, report); }, "scene.xyz",
+  testing::requireInputError([&] { importScene(directory / "scene.xyz", SceneImportOptions{}, report); }, "scene.xyz",
                              "cannot import scene");
   std::ofstream(directory / "broken.pk3") << "PK not really a zip";
-  testing::requireInputError([&] { importScene(directory / "broken.pk3", ImportOptions{}, report); }, "broken.pk3",
+  testing::requireInputError([&] { importScene(directory / "broken.pk3", SceneImportOptions{}, report); }, "broken.pk3",
                              "not a readable zip");
   if (std::filesystem::exists(kLevels)) {
-    ImportOptions options;
+    SceneImportOptions options;
     options.map = "nosuchmap";
     testing::requireInputError([&] { importScene(kLevels, options, report); }, kLevels.string(), "no map 'nosuchmap'");
   }

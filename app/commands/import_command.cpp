@@ -23,7 +23,7 @@ void registerImportCommand(CLI::App& app) {
   struct Arguments {
     std::string from, in, out, poses, matrix = "camera-to-world", depthKind = "euclidean", up = "z", units = "metres";
     double depthScale = 0.0;
-    ImportOptions options;
+    CaptureImportOptions options;
   };
   auto arguments = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand("import", "Make a data set of RGB-D panoramas captured or rendered elsewhere");
@@ -67,7 +67,7 @@ void registerImportCommand(CLI::App& app) {
     const std::vector<SourceView> views = scanCaptureLayout(layout, in, layoutOptions);
     const nlohmann::json provenance = {{"layout", a.from}, {"source", in.string()}, {"matrix", a.matrix}};
     const std::string scene = (in.has_filename() ? in.filename() : in.parent_path().filename()).string();
-    const ImportReport report = importCapture(views, a.options, scene, provenance, a.out);
+    const CaptureImportReport report = importCapture(views, a.options, scene, provenance, a.out);
 
     std::printf("imported %d samples and %d probes of %dx%d from %s (%s layout) into %s in %.1f s\n", report.samples,
                 report.probes, report.width, report.height, in.c_str(), a.from.c_str(), a.out.c_str(), report.seconds);

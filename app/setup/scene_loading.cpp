@@ -24,11 +24,11 @@ LoadedScene loadSceneForCapture(const std::string& spec, const SceneImportArgume
   const std::filesystem::path path(spec);
   if (!std::filesystem::exists(path)) throw InputError(spec, "scene file does not exist");
   if (path.extension() == ".json") return {path.stem().string(), loadSceneDescription(path), false};
-  ImportOptions options;
+  SceneImportOptions options;
   options.unitScale = arguments.unitScale;
   options.upAxis = arguments.upAxis;
   options.map = arguments.map;
-  ImportReport report;
+  SceneImportReport report;
   LoadedScene loaded{"", importScene(path, options, report), true};
   loaded.name = loaded.scene.name;
   std::printf("imported %s: %zu triangles, %zu materials, %d textures", spec.c_str(), loaded.scene.triangleCount(),

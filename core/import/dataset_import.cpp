@@ -93,7 +93,7 @@ struct ConvertedView {
   bool resampled = false;
 };
 
-ConvertedView convertView(const SourceView& view, const ViewPose& pose, const ImportOptions& options) {
+ConvertedView convertView(const SourceView& view, const ViewPose& pose, const CaptureImportOptions& options) {
   ConvertedView converted;
   DecodedDepth depth = decodeDepthFile(view.depth);
   ColorImage color = linearColor(view.color);
@@ -124,9 +124,9 @@ ConvertedView convertView(const SourceView& view, const ViewPose& pose, const Im
 
 }  // namespace
 
-ImportReport importCapture(const std::vector<SourceView>& views, const ImportOptions& options,
-                           const std::string& sceneName, const nlohmann::json& provenance,
-                           const std::filesystem::path& out) {
+CaptureImportReport importCapture(const std::vector<SourceView>& views, const CaptureImportOptions& options,
+                                  const std::string& sceneName, const nlohmann::json& provenance,
+                                  const std::filesystem::path& out) {
   std::vector<ViewPose> poses;
   for (const SourceView& view : views) poses.push_back(toTriwalkFrame(view.pose, options.up, options.metresPerUnit));
   const glm::ivec2 size = checkViews(views, poses);
@@ -157,7 +157,7 @@ ImportReport importCapture(const std::vector<SourceView>& views, const ImportOpt
 
   StagedDirectory staging(out, kManifestFileName);
   createViewFolders(staging.path());
-  ImportReport report;
+  CaptureImportReport report;
   report.width = size.x;
   report.height = size.y;
   InterruptScope interruptScope;

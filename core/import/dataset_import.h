@@ -17,7 +17,7 @@
 
 namespace triwalk {
 
-struct ImportOptions {
+struct CaptureImportOptions {
   DepthKind depthKind = DepthKind::Euclidean;
   UpAxis up = UpAxis::PlusZ;
   double metresPerUnit = 1.0;    // of the poses' positions
@@ -26,7 +26,7 @@ struct ImportOptions {
   bool quiet = false;
 };
 
-struct ImportReport {
+struct CaptureImportReport {
   int samples = 0;
   int probes = 0;
   int width = 0;
@@ -43,8 +43,8 @@ struct ImportReport {
 // Throws InputError naming the file for an unreadable image, a size
 // mismatch (colour, depth, mask, between views, width != 2 x height), a
 // non-finite pose or two views at one position (within 1 mm in x, y).
-ImportReport importCapture(const std::vector<SourceView>& views, const ImportOptions& options,
-                           const std::string& sceneName, const nlohmann::json& provenance,
-                           const std::filesystem::path& out);
+CaptureImportReport importCapture(const std::vector<SourceView>& views, const CaptureImportOptions& options,
+                                  const std::string& sceneName, const nlohmann::json& provenance,
+                                  const std::filesystem::path& out);
 
 }  // namespace triwalk

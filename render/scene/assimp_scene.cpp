@@ -40,8 +40,8 @@ bool invisibleQuake3Surface(const std::string& texture) {
 
 class SceneConverter {
 public:
-  SceneConverter(const std::filesystem::path& file, const aiScene& scene, bool quake3, const std::vector<const ZipArchive*>& archives,
-                 ImportReport& report)
+  SceneConverter(const std::filesystem::path& file, const aiScene& scene, bool quake3,
+                 const std::vector<const ZipArchive*>& archives, SceneImportReport& report)
       : file_(file), scene_(scene), quake3_(quake3), archives_(archives), report_(report) {}
 
   // The texture a material path names, as an index into result.textures, or -1.
@@ -105,7 +105,7 @@ private:
   const aiScene& scene_;
   bool quake3_;
   std::vector<const ZipArchive*> archives_;
-  ImportReport& report_;
+  SceneImportReport& report_;
   std::map<std::string, int> loaded_;
 };
 
@@ -132,7 +132,7 @@ std::vector<bool> doorOnlyMaterials(const aiScene& scene, int& doorMeshes) {
 
 }  // namespace
 
-Scene importScene(const std::filesystem::path& file, const ImportOptions& options, ImportReport& report) {
+Scene importScene(const std::filesystem::path& file, const SceneImportOptions& options, SceneImportReport& report) {
   if (!std::filesystem::exists(file)) throw InputError(file.string(), "scene file does not exist");
   const std::string extension = lowercase(file.extension().string());
   const bool quake3 = extension == ".pk3" || extension == ".bsp";

@@ -13,13 +13,13 @@
 
 namespace triwalk {
 
-struct ImportOptions {
+struct SceneImportOptions {
   float unitScale = 0.0f;       // metres per scene unit; 0: 0.0254 for Quake 3 (inches), else 1
   std::string upAxis = "auto";  // x, y, z or auto (z for Quake 3, y otherwise: Assimp's convention)
   std::string map;              // Quake 3 archives: the map (e.g. oacmpdm3); empty: the first
 };
 
-struct ImportReport {
+struct SceneImportReport {
   std::string map;                          // the Quake 3 map read
   std::vector<std::string> missingTextures;
   int texturesLoaded = 0;
@@ -28,6 +28,6 @@ struct ImportReport {
 };
 
 // Throws InputError naming the file for a missing, corrupt or unsupported scene.
-Scene importScene(const std::filesystem::path& file, const ImportOptions& options, ImportReport& report);
+Scene importScene(const std::filesystem::path& file, const SceneImportOptions& options, SceneImportReport& report);
 
 }  // namespace triwalk

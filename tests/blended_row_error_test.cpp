@@ -20,7 +20,9 @@ using namespace triwalk;
 
 namespace {
 
-bool sameBits(double a, double b) { return std::bit_cast<uint64_t>(a) == std::bit_cast<uint64_t>(b); }
+bool sameDoubleBits(double a, double b) {
+  return std::bit_cast<uint64_t>(a) == std::bit_cast<uint64_t>(b);
+}
 
 // A row of `count` pixels in `layerCount` layers: per pixel a front
 // distance, and each layer uncovered, sky, at the front, just inside or
@@ -91,8 +93,8 @@ TEST_CASE("a row's error in four lanes: the same sums as blending and comparing 
               anyHole |= pixel.hole;
             }
             INFO(layerCount << " layers, " << count << " pixels, stride " << truthStride);
-            CHECK(sameBits(lanes.result().rms, expected.result().rms));
-            CHECK(sameBits(lanes.result().badPercent, expected.result().badPercent));
+            CHECK(sameDoubleBits(lanes.result().rms, expected.result().rms));
+            CHECK(sameDoubleBits(lanes.result().badPercent, expected.result().badPercent));
             CHECK(lanes.result().total > 0.0);
             ++rowsChecked;
             rowsWithHoles += anyHole;
@@ -132,6 +134,6 @@ TEST_CASE("a row's error in four lanes: one pixel at a time, each case alone") {
       expected.add(0, displayColorFast(pixel.color), pixel.hole, truth[i]);
     }
     INFO("distances " << first << ", " << second);
-    CHECK(sameBits(lanes.result().total, expected.result().total));
+    CHECK(sameDoubleBits(lanes.result().total, expected.result().total));
   }
 }

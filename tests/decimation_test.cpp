@@ -75,14 +75,6 @@ void checkValidMesh(const ViewMesh& mesh) {
   }
 }
 
-std::vector<glm::dvec2> grid(int columns, int rows) {
-  std::vector<glm::dvec2> points;
-  for (int x = 0; x < columns; ++x) {
-    for (int y = 0; y < rows; ++y) points.emplace_back(double(x), double(y));
-  }
-  return points;
-}
-
 }  // namespace
 
 TEST_CASE("a collapse that violates the link condition is refused") {
@@ -135,7 +127,7 @@ TEST_CASE("boundary: corners never move, straight boundary vertices may go, the 
   //   (0,2) . . . (4,2)
   //     .   . . .   .
   //   (0,0) . . . (4,0)
-  const std::vector<glm::dvec2> positions = grid(5, 3);
+  const std::vector<glm::dvec2> positions = testing::unitGrid(5, 3);
   const ViewMesh initial = ViewMesh::delaunay(positions, {}, "grid");
   SyntheticErrors errors(positions);
   EdgeCollapseDecimator decimator(initial, fromTriangles(errors), centroidOptions(0.0, 3));
@@ -161,7 +153,7 @@ TEST_CASE("boundary: corners never move, straight boundary vertices may go, the 
 }
 
 TEST_CASE("replaying the log to any prefix gives a valid mesh, forward and backward") {
-  const std::vector<glm::dvec2> positions = grid(6, 5);
+  const std::vector<glm::dvec2> positions = testing::unitGrid(6, 5);
   const ViewMesh initial = ViewMesh::delaunay(positions, {}, "grid");
   SyntheticErrors errors(positions);
   EdgeCollapseDecimator decimator(initial, fromTriangles(errors), centroidOptions(0.0, 6));
@@ -186,7 +178,7 @@ TEST_CASE("stale heap entries are skipped: each collapse is the cheapest a fresh
   // the affected edges and skips stale heap entries, must agree. (Eager
   // re-costing: a lazy decimator may make a collapse that is not the
   // cheapest, from a stale cost, and is tested in refinement_test.cpp.)
-  const std::vector<glm::dvec2> positions = grid(6, 5);
+  const std::vector<glm::dvec2> positions = testing::unitGrid(6, 5);
   const ViewMesh initial = ViewMesh::delaunay(positions, {}, "grid");
   SyntheticErrors errors(positions);
   DecimationOptions eager = centroidOptions(0.0, 5);
@@ -212,7 +204,7 @@ TEST_CASE("stale heap entries are skipped: each collapse is the cheapest a fresh
 }
 
 TEST_CASE("the first costing of every edge counts its triangle errors and stops on Ctrl-C") {
-  const std::vector<glm::dvec2> positions = grid(12, 8);
+  const std::vector<glm::dvec2> positions = testing::unitGrid(12, 8);
   const ViewMesh initial = ViewMesh::delaunay(positions, {}, "grid");
   SyntheticErrors errors(positions);
   ProgressReporter costing("cost every edge", 0, true);
@@ -229,7 +221,7 @@ TEST_CASE("the first costing of every edge counts its triangle errors and stops 
 }
 
 TEST_CASE("edge cost: the area-weighted mean of the updated triangles' errors, or the paper's plain mean") {
-  const std::vector<glm::dvec2> positions = grid(4, 3);
+  const std::vector<glm::dvec2> positions = testing::unitGrid(4, 3);
   const ViewMesh initial = ViewMesh::delaunay(positions, {}, "grid");
   for (const bool weighted : {true, false}) {
     SyntheticErrors errors(positions);
@@ -259,7 +251,7 @@ TEST_CASE("edge cost: the area-weighted mean of the updated triangles' errors, o
 }
 
 TEST_CASE("the triangle-error cache: every distinct triangle is computed once") {
-  const std::vector<glm::dvec2> positions = grid(6, 5);
+  const std::vector<glm::dvec2> positions = testing::unitGrid(6, 5);
   const ViewMesh initial = ViewMesh::delaunay(positions, {}, "grid");
   SyntheticErrors errors(positions);
   EdgeCollapseDecimator decimator(initial, fromTriangles(errors), centroidOptions(0.0, 5));
@@ -270,7 +262,7 @@ TEST_CASE("the triangle-error cache: every distinct triangle is computed once") 
 }
 
 TEST_CASE("point location walks to the containing triangle, and outside to the nearest") {
-  const std::vector<glm::dvec2> positions = grid(6, 5);
+  const std::vector<glm::dvec2> positions = testing::unitGrid(6, 5);
   const ViewMesh mesh = ViewMesh::delaunay(positions, {}, "grid");
   for (double x = 0.05; x < 5.0; x += 0.37) {
     for (double y = 0.05; y < 4.0; y += 0.41) {

@@ -26,9 +26,9 @@ using namespace triwalk;
 namespace {
 
 constexpr int kFullWidth = 512;
-constexpr int kWidth = 128;  // a quarter
+constexpr int kCopyWidth = 128;  // a quarter
 
-Dataset smallDataset(const testing::TemporaryDirectory& directory, int probes = 0) {
+Dataset panoramaDataset(const testing::TemporaryDirectory& directory, int probes = 0) {
   testing::writeAnalyticDataset(directory.path(), 2, 2, kFullWidth, probes);
   return Dataset::open(directory.path());
 }
@@ -54,14 +54,14 @@ void writeBytes(const std::filesystem::path& path, const std::string& bytes) {
 
 TEST_CASE("a view's downsampled copy is made once, kept in the data set, and read back bit for bit") {
   testing::TemporaryDirectory directory;
-  const Dataset dataset = smallDataset(directory);
+  const Dataset dataset = panoramaDataset(directory);
   const ViewRecord& view = dataset.sample(1);
-  const Panorama fromFile = dataset.loadView(view, kWidth);
+  const Panorama fromFile = dataset.loadView(view, kCopyWidth);
 
   DownsampledPanoramaStore store(dataset);
-  const std::filesystem::path file = store.file(view, kWidth);
+  const std::filesystem::path file = store.file(view, kCopyWidth);
   CHECK(file == directory.path() / "downsampled/samples/s1.exr.128.pano");
-  requireSamePanorama(store.load(view, kWidth), fromFile);
+  requireSamePanorama(store.load(view, kCopyWidth), fromFile);
   CHECK(store.downsampled() == 1);
   CHECK(store.loaded() == 0);
   REQUIRE(std::filesystem::is_regular_file(file));
@@ -69,7 +69,7 @@ TEST_CASE("a view's downsampled copy is made once, kept in the data set, and rea
 
   // A second store (a later run) reads it instead of decoding the EXR.
   DownsampledPanoramaStore later(dataset);
-  requireSamePanorama(later.load(view, kWidth), fromFile);
+  requireSamePanorama(later.load(view, kCopyWidth), fromFile);
   CHECK(later.loaded() == 1);
   CHECK(later.downsampled() == 0);
   CHECK(std::filesystem::last_write_time(file) == written);
@@ -84,9 +84,9 @@ TEST_CASE("a view's downsampled copy is made once, kept in the data set, and rea
   SUBCASE("a rewritten view file is downsampled again: the copy follows the file") {
     const Panorama other = dataset.loadView(dataset.sample(2));
     writePanoramaExr(directory.path() / view.file, other);
-    requireSamePanorama(later.load(view, kWidth), dataset.loadView(dataset.sample(2), kWidth));
+    requireSamePanorama(later.load(view, kCopyWidth), dataset.loadView(dataset.sample(2), kCopyWidth));
     CHECK(later.downsampled() == 1);
-    requireSamePanorama(later.load(view, kWidth), dataset.loadView(dataset.sample(2), kWidth));
+    requireSamePanorama(later.load(view, kCopyWidth), dataset.loadView(dataset.sample(2), kCopyWidth));
     CHECK(later.loaded() == 2);
   }
   SUBCASE("a damaged, truncated or foreign copy is made again and mended") {
@@ -94,23 +94,24 @@ TEST_CASE("a view's downsampled copy is made once, kept in the data set, and rea
     std::string damaged = good;
     damaged[damaged.size() - 3] ^= 0x5a;  // a distance
     writeBytes(file, damaged);
-    requireSamePanorama(later.load(view, kWidth), fromFile);
+    requireSamePanorama(later.load(view, kCopyWidth), fromFile);
     CHECK(later.downsampled() == 1);
     CHECK(fileBytes(file) == good);
     writeBytes(file, good.substr(0, good.size() - 4));
-    requireSamePanorama(later.load(view, kWidth), fromFile);
+    requireSamePanorama(later.load(view, kCopyWidth), fromFile);
     CHECK(later.downsampled() == 2);
     // Another view's copy under this view's name: its key is another file's.
-    DownsampledPanoramaStore(dataset).load(dataset.sample(3), kWidth);
-    std::filesystem::copy_file(later.file(dataset.sample(3), kWidth), file, std::filesystem::copy_options::overwrite_existing);
-    requireSamePanorama(later.load(view, kWidth), fromFile);
+    DownsampledPanoramaStore(dataset).load(dataset.sample(3), kCopyWidth);
+    std::filesystem::copy_file(later.file(dataset.sample(3), kCopyWidth), file,
+                               std::filesystem::copy_options::overwrite_existing);
+    requireSamePanorama(later.load(view, kCopyWidth), fromFile);
     CHECK(later.downsampled() == 3);
     CHECK(fileBytes(file) == good);
   }
   SUBCASE("a copy whose checksum fits but which holds a NaN is made again") {
     // Written as the store writes, checksum and all: only the values betray it.
     std::string bytes = fileBytes(file);
-    const size_t header = 8 + 8 + 8 + 4 + 4, pixels = size_t(kWidth) * size_t(kWidth / 2);
+    const size_t header = 8 + 8 + 8 + 4 + 4, pixels = size_t(kCopyWidth) * size_t(kCopyWidth / 2);
     const float nan = std::numeric_limits<float>::quiet_NaN();
     std::memcpy(bytes.data() + header + pixels * sizeof(glm::vec3), &nan, sizeof nan);  // the first distance
     StableHash checksum;
@@ -119,7 +120,7 @@ TEST_CASE("a view's downsampled copy is made once, kept in the data set, and rea
     const uint64_t value = checksum.value();
     std::memcpy(bytes.data() + 16, &value, sizeof value);
     writeBytes(file, bytes);
-    const Panorama loaded = later.load(view, kWidth);
+    const Panorama loaded = later.load(view, kCopyWidth);
     CHECK_FALSE(std::isnan(loaded.distance.pixels[0]));
     requireSamePanorama(loaded, fromFile);
     CHECK(later.downsampled() == 1);
@@ -128,24 +129,24 @@ TEST_CASE("a view's downsampled copy is made once, kept in the data set, and rea
 
 TEST_CASE("a missing view file is the file reader's one-line error, and a store that cannot be written only costs the time") {
   testing::TemporaryDirectory directory;
-  const Dataset dataset = smallDataset(directory);
+  const Dataset dataset = panoramaDataset(directory);
   DownsampledPanoramaStore store(dataset);
   std::filesystem::remove(directory.path() / dataset.sample(0).file);
-  testing::requireInputError([&] { store.load(dataset.sample(0), kWidth); },
+  testing::requireInputError([&] { store.load(dataset.sample(0), kCopyWidth); },
                              (directory.path() / dataset.sample(0).file).string(), "file does not exist");
 
   // A file where the store's directory should be: nothing can be kept.
   std::ofstream(directory.path() / "downsampled") << "not a directory";
   const ViewRecord& view = dataset.sample(1);
-  requireSamePanorama(store.load(view, kWidth), dataset.loadView(view, kWidth));
-  requireSamePanorama(store.load(view, kWidth), dataset.loadView(view, kWidth));
+  requireSamePanorama(store.load(view, kCopyWidth), dataset.loadView(view, kCopyWidth));
+  requireSamePanorama(store.load(view, kCopyWidth), dataset.loadView(view, kCopyWidth));
   CHECK(store.downsampled() == 2);
   CHECK(store.loaded() == 0);
 }
 
 TEST_CASE("a copy kept from the panorama just written equals the one made from its file, colours rounded to halves") {
   testing::TemporaryDirectory directory;
-  const Dataset dataset = smallDataset(directory);
+  const Dataset dataset = panoramaDataset(directory);
   const ViewRecord& view = dataset.sample(0);
   // Colours a half float cannot hold, as a renderer gives them.
   Panorama rendered = dataset.loadView(view);
@@ -153,18 +154,18 @@ TEST_CASE("a copy kept from the panorama just written equals the one made from i
   writePanoramaExr(directory.path() / view.file, rendered);
 
   DownsampledPanoramaStore capture(dataset);
-  const Panorama kept = capture.keep(view, rendered, kWidth);
+  const Panorama kept = capture.keep(view, rendered, kCopyWidth);
   DownsampledPanoramaStore later(dataset);
-  requireSamePanorama(later.load(view, kWidth), kept);
+  requireSamePanorama(later.load(view, kCopyWidth), kept);
   CHECK(later.loaded() == 1);
-  std::filesystem::remove(later.file(view, kWidth));
-  requireSamePanorama(later.load(view, kWidth), kept);
+  std::filesystem::remove(later.file(view, kCopyWidth));
+  requireSamePanorama(later.load(view, kCopyWidth), kept);
   CHECK(later.downsampled() == 1);
 }
 
 TEST_CASE("what capture keeps of each view is what a decimation at the defaults reads, identical to loading afresh") {
   testing::TemporaryDirectory directory;
-  const Dataset dataset = smallDataset(directory, 2);
+  const Dataset dataset = panoramaDataset(directory, 2);
   const glm::ivec2 fullSize(kFullWidth, kFullWidth / 2);
   SelectionInputKeeper keeper(directory.path(), fullSize);
   CHECK(keeper.errorWidth() == errorWidthFor(dataset, 0));

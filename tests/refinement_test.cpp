@@ -59,15 +59,6 @@ FormulaErrors::Formula distanceAndSightErrors(const std::vector<glm::dvec2>& pos
   };
 }
 
-// Sample x * rows + y at (x, y), 1 m apart.
-std::vector<glm::dvec2> grid(int columns, int rows) {
-  std::vector<glm::dvec2> points;
-  for (int x = 0; x < columns; ++x) {
-    for (int y = 0; y < rows; ++y) points.emplace_back(double(x), double(y));
-  }
-  return points;
-}
-
 // The local moves alone: within 1.5 m, up to 20 passes, no exchanges.
 const RefinementOptions kLocalOnly{1.5, 20, {}, nullptr, 0};
 
@@ -97,7 +88,7 @@ TEST_CASE("a reference that spoils every triangle it is in moves away to the low
   //   1  5  8 12     whose panorama is bad: every reconstruction that uses
   //                  it costs 11, every other costs 1.
   std::vector<glm::dvec2> positions = {{1, 1}};
-  for (const glm::dvec2& p : grid(4, 4)) {
+  for (const glm::dvec2& p : testing::unitGrid(4, 4)) {
     if (p != glm::dvec2(1, 1)) positions.push_back(p);
   }
   const FormulaErrors::Formula formula = [](const Triangle& t, int) { return contains(t, 0) ? 11.0 : 1.0; };
@@ -126,7 +117,7 @@ TEST_CASE("refinement lowers the mean error, logs moves that replay to the resul
   // 8 x 5 grid; a reconstruction costs the distance from the destination to
   // the nearest of its references, so references crowded into one corner
   // must spread out.
-  const std::vector<glm::dvec2> positions = grid(8, 5);
+  const std::vector<glm::dvec2> positions = testing::unitGrid(8, 5);
   const FormulaErrors::Formula formula = [&](const Triangle& t, int destination) {
     double nearest = 1e9;
     for (int r : t) nearest = std::min(nearest, glm::length(positions[size_t(r)] - positions[size_t(destination)]));
@@ -225,7 +216,7 @@ TEST_CASE("an exchange moves a reference where no local move reaches: across a g
 }
 
 TEST_CASE("refinement starts from the Delaunay mesh of a decimated mesh's references, and is never worse than it") {
-  const std::vector<glm::dvec2> positions = grid(8, 5);
+  const std::vector<glm::dvec2> positions = testing::unitGrid(8, 5);
   const std::vector<int> references = {0, 1, 5, 6, 2, 39};  // crowded at (0,0)-(1,1), and the far corner (7, 4)
   const ViewMesh delaunay = ViewMesh::delaunay(positions, references, "test");
   // A mesh that is not Delaunay: the Delaunay one without a triangle on
@@ -274,7 +265,7 @@ TEST_CASE("refinement starts from the Delaunay mesh of a decimated mesh's refere
 }
 
 TEST_CASE("exchange candidates are free samples spread over the area") {
-  const std::vector<glm::dvec2> positions = grid(10, 10);  // 1 m apart
+  const std::vector<glm::dvec2> positions = testing::unitGrid(10, 10);  // 1 m apart
   const std::vector<int> references = {0, 11, 22};
   const std::vector<int> candidates = exchangeCandidates(positions, references);
   for (size_t i = 0; i < candidates.size(); ++i) {
@@ -293,7 +284,7 @@ TEST_CASE("exchange candidates are free samples spread over the area") {
 }
 
 TEST_CASE("refinement with radius 0 changes nothing, and Ctrl-C stops it") {
-  const std::vector<glm::dvec2> positions = grid(6, 4);
+  const std::vector<glm::dvec2> positions = testing::unitGrid(6, 4);
   FormulaErrors errors(
       [](const Triangle& t, int destination) { return double((t[0] + t[1] + t[2] + destination) % 7); });
   const std::vector<int> references = {0, 3, 20, 23, 9};

@@ -18,7 +18,7 @@ using namespace triwalk;
 
 namespace {
 
-constexpr int kWidth = 256;
+constexpr int kStoreWidth = 256;
 
 WarpOptions simplifiedOptions(float tolerancePixels = 0.25f) {
   WarpOptions options;
@@ -32,7 +32,7 @@ void requireSameSource(const WarpSource& a, const WarpSource& b, glm::vec3 desti
   REQUIRE(a.simplifiedTriangles().sky == b.simplifiedTriangles().sky);
   REQUIRE(a.simplifiedTriangles().orphans == b.simplifiedTriangles().orphans);
   REQUIRE(a.triangleCount() == b.triangleCount());
-  const DestinationCamera camera = DestinationCamera::panorama(destination, kWidth, kWidth / 2);
+  const DestinationCamera camera = DestinationCamera::panorama(destination, kStoreWidth, kStoreWidth / 2);
   const WarpLayer layerA = warpToCamera(a, camera, WarpMethod::Mesh);
   const WarpLayer layerB = warpToCamera(b, camera, WarpMethod::Mesh);
   CHECK(layerA.color.pixels == layerB.color.pixels);
@@ -40,9 +40,9 @@ void requireSameSource(const WarpSource& a, const WarpSource& b, glm::vec3 desti
   CHECK(layerA.covered == layerB.covered);
 }
 
-// Four analytic samples at kWidth, written into directory.
-Dataset smallDataset(const testing::TemporaryDirectory& directory) {
-  testing::writeAnalyticDataset(directory.path(), 2, 2, kWidth, 0);
+// Four analytic samples at kStoreWidth, written into directory.
+Dataset meshDataset(const testing::TemporaryDirectory& directory) {
+  testing::writeAnalyticDataset(directory.path(), 2, 2, kStoreWidth, 0);
   return Dataset::open(directory.path());
 }
 
@@ -58,7 +58,7 @@ void overwriteByte(const std::filesystem::path& path, std::streamoff offset) {
 
 TEST_CASE("a view's simplified mesh is computed once, kept in the data set, and read back identical") {
   testing::TemporaryDirectory directory;
-  const Dataset dataset = smallDataset(directory);
+  const Dataset dataset = meshDataset(directory);
   const ViewRecord& view = dataset.sample(1);
   const Panorama panorama = dataset.loadView(view);
   const glm::vec3 destination = dataset.sample(2).position;
@@ -66,7 +66,7 @@ TEST_CASE("a view's simplified mesh is computed once, kept in the data set, and 
   REQUIRE(fresh.triangleCount() > 0);
 
   SimplifiedMeshStore store(dataset);
-  const std::filesystem::path file = store.file(view, kWidth, simplifiedOptions().meshTolerancePixels);
+  const std::filesystem::path file = store.file(view, kStoreWidth, simplifiedOptions().meshTolerancePixels);
   CHECK(file.parent_path().string().starts_with((directory.path() / "meshes").string()));
   requireSameSource(store.source(view, panorama, simplifiedOptions()), fresh, destination);
   CHECK(store.simplified() == 1);
@@ -86,7 +86,7 @@ TEST_CASE("a view's simplified mesh is computed once, kept in the data set, and 
     REQUIRE(coarse.triangleCount() < fresh.triangleCount());
     requireSameSource(later.source(view, panorama, simplifiedOptions(2.0f)), coarse, destination);
     CHECK(later.simplified() == 1);
-    const std::filesystem::path coarseFile = later.file(view, kWidth, 2.0f);
+    const std::filesystem::path coarseFile = later.file(view, kStoreWidth, 2.0f);
     CHECK(coarseFile != file);
     CHECK(std::filesystem::is_regular_file(coarseFile));
     // Both read back: runs that alternate the two tolerances never simplify again.
@@ -121,13 +121,13 @@ TEST_CASE("a view's simplified mesh is computed once, kept in the data set, and 
 
 TEST_CASE("a source made from its stored mesh has the simplified source's vertices and orphans, bit for bit") {
   testing::TemporaryDirectory directory;
-  const Dataset dataset = smallDataset(directory);
+  const Dataset dataset = meshDataset(directory);
   const ViewRecord& view = dataset.sample(2);
   Panorama spiked = dataset.loadView(view);
   // A pixel far nearer than its neighbours: the stretch test drops all six
   // of its triangles, so it is splatted alone, an orphan. A source read
   // from the store runs no stretch test and must know it all the same.
-  const uint32_t spike = 40 * kWidth + 100;
+  const uint32_t spike = 40 * kStoreWidth + 100;
   spiked.distance.pixels[spike] *= 0.3f;
   const WarpSource fresh(spiked, view.position, degreesToRadians(view.yawDegrees), simplifiedOptions());
   const std::vector<uint32_t>& orphans = fresh.simplifiedTriangles().orphans;
@@ -153,7 +153,7 @@ TEST_CASE("a source made from its stored mesh has the simplified source's vertic
 
 TEST_CASE("the grid needs no store, and a store that cannot be written only costs the time") {
   testing::TemporaryDirectory directory;
-  const Dataset dataset = smallDataset(directory);
+  const Dataset dataset = meshDataset(directory);
   const ViewRecord& view = dataset.sample(0);
   const Panorama panorama = dataset.loadView(view);
 

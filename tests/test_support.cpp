@@ -39,4 +39,12 @@ void requireInputError(const std::function<void()>& action, const std::string& s
   FAIL("expected an InputError naming " << subject << " with '" << problem << "'");
 }
 
+std::vector<glm::dvec2> unitGrid(int columns, int rows) {
+  std::vector<glm::dvec2> points;
+  for (int x = 0; x < columns; ++x) {
+    for (int y = 0; y < rows; ++y) points.emplace_back(double(x), double(y));
+  }
+  return points;
+}
+
 }  // namespace triwalk::testing

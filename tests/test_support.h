@@ -1,14 +1,16 @@
 #pragma once
-// Helpers shared by the test suites: scratch directories and checks that
-// an InputError names the right file.
+// Helpers shared by the test suites: scratch directories, checks that an
+// InputError names the right file, sample layouts.
 
 #include "core/support/errors.h"
 
 #include <doctest/doctest.h>
+#include <glm/vec2.hpp>
 
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace triwalk::testing {
 
@@ -32,5 +34,8 @@ std::string readTextFileOrEmpty(const std::filesystem::path& path);
 // Runs action, which must throw InputError whose one-line message contains
 // both the expected subject (a file name) and the expected problem text.
 void requireInputError(const std::function<void()>& action, const std::string& subject, const std::string& problem);
+
+// Sample x * rows + y at (x, y), 1 m apart.
+std::vector<glm::dvec2> unitGrid(int columns, int rows);
 
 }  // namespace triwalk::testing

@@ -18,7 +18,7 @@ namespace {
 
 // A file: the header (sizes: width and height), then the colour (three
 // floats a pixel) and the distance (one), row by row.
-constexpr std::array<char, 8> kMagic = {'T', 'W', 'P', 'A', 'N', 'O', '0', '1'};
+constexpr std::array<char, 8> kPanoramaMagic = {'T', 'W', 'P', 'A', 'N', 'O', '0', '1'};
 static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "colours are written as three packed floats");
 
 uint64_t pixelsChecksum(const Panorama& panorama) {
@@ -55,7 +55,7 @@ int DownsampledPanoramaStore::factorOf(int width) const {
 
 std::optional<uint64_t> DownsampledPanoramaStore::keyOf(const ViewRecord& view, int width) const {
   StableHash hash;
-  hash.addValue(kMagic);
+  hash.addValue(kPanoramaMagic);
   hash.addValue(fullSize_);
   hash.addValue(width);
   std::ifstream stream(datasetDirectory_ / view.file, std::ios::binary);
@@ -97,7 +97,7 @@ Panorama DownsampledPanoramaStore::keep(const ViewRecord& view, const Panorama& 
 }
 
 std::optional<Panorama> DownsampledPanoramaStore::read(const std::filesystem::path& path, uint64_t key, int width) const {
-  const std::optional<DerivedFile> file = files_.read(path, kMagic, key);
+  const std::optional<DerivedFile> file = files_.read(path, kPanoramaMagic, key);
   const int height = fullSize_.y / factorOf(width);
   const size_t pixels = size_t(width) * size_t(height);
   if (!file || file->header.sizes[0] != uint32_t(width) || file->header.sizes[1] != uint32_t(height) ||
@@ -113,7 +113,8 @@ std::optional<Panorama> DownsampledPanoramaStore::read(const std::filesystem::pa
 }
 
 void DownsampledPanoramaStore::store(const std::filesystem::path& path, uint64_t key, const Panorama& copy) {
-  const DerivedFileHeader header{kMagic, key, pixelsChecksum(copy), {uint32_t(copy.width()), uint32_t(copy.height())}};
+  const DerivedFileHeader header{
+      kPanoramaMagic, key, pixelsChecksum(copy), {uint32_t(copy.width()), uint32_t(copy.height())}};
   files_.write(path, header, {std::as_bytes(std::span(copy.color.pixels)), std::as_bytes(std::span(copy.distance.pixels))});
 }
 

@@ -18,12 +18,12 @@ namespace {
 // A file: the header (sizes: the surface and sky index counts), then the
 // surface and sky indices, then the orphans to the end of the file (none
 // for a walking mesh). Format 01 had no orphans: its files are made again.
-constexpr std::array<char, 8> kMagic = {'T', 'W', 'M', 'E', 'S', 'H', '0', '2'};
+constexpr std::array<char, 8> kMeshMagic = {'T', 'W', 'M', 'E', 'S', 'H', '0', '2'};
 
 // Everything the simplified triangles depend on.
 uint64_t sourceKey(const ViewRecord& view, const Panorama& panorama, const WarpOptions& options) {
   StableHash hash;
-  hash.addValue(kMagic);
+  hash.addValue(kMeshMagic);
   hash.addValue(panorama.width());
   hash.addValue(panorama.height());
   hash.addBytes(std::as_bytes(std::span<const float>(panorama.distance.pixels)));
@@ -110,7 +110,7 @@ WarpSource SimplifiedMeshStore::source(const ViewRecord& view, const Panorama& p
 
 std::optional<SimplifiedTriangles> SimplifiedMeshStore::load(const std::filesystem::path& path, uint64_t key,
                                                               uint32_t vertexCount) const {
-  const std::optional<DerivedFile> file = files_.read(path, kMagic, key);
+  const std::optional<DerivedFile> file = files_.read(path, kMeshMagic, key);
   if (!file) return std::nullopt;
   const auto [surfaceIndices, skyIndices] = file->header.sizes;
   const std::span<const std::byte> contents = file->contents();
@@ -144,8 +144,10 @@ std::optional<SimplifiedTriangles> SimplifiedMeshStore::load(const std::filesyst
 }
 
 void SimplifiedMeshStore::store(const std::filesystem::path& path, uint64_t key, const SimplifiedTriangles& triangles) {
-  const DerivedFileHeader header{
-      kMagic, key, indicesChecksum(triangles), {uint32_t(triangles.surface.size()), uint32_t(triangles.sky.size())}};
+  const DerivedFileHeader header{kMeshMagic,
+                                 key,
+                                 indicesChecksum(triangles),
+                                 {uint32_t(triangles.surface.size()), uint32_t(triangles.sky.size())}};
   files_.write(path, header,
                {std::as_bytes(std::span(triangles.surface)), std::as_bytes(std::span(triangles.sky)),
                 std::as_bytes(std::span(triangles.orphans))});

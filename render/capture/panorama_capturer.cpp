@@ -9,7 +9,7 @@ namespace triwalk {
 namespace {
 
 constexpr int kMaxLights = 16;  // shaders/scene.frag
-constexpr float kNearPlane = 0.01f;  // metres
+constexpr float kCaptureNearPlane = 0.01f;  // metres
 
 // The orientation OpenGL expects for each cube face when it is rendered
 // through a framebuffer and then sampled by direction, in GL's face order
@@ -27,7 +27,7 @@ glm::mat4 cubeFaceProjection() {
   projection[0][0] = 1.0f;
   projection[1][1] = 1.0f;
   projection[2][3] = -1.0f;
-  projection[3][2] = kNearPlane;
+  projection[3][2] = kCaptureNearPlane;
   return projection;
 }
 

@@ -332,7 +332,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 constexpr uint64_t kEmpty = std::numeric_limits<uint64_t>::max();
-constexpr float kPinholeNear = 0.01f;  // metres
 
 // Z-buffer payload: (triangle << 2) for a triangle, (vertex << 2) | 3 for
 // a splatted point.
@@ -361,7 +360,7 @@ ProjectedVertex projectVertex(const WarpSource& source, uint32_t vertex, const D
     projected.valid = true;
   } else {
     const glm::vec3 camera = destination.pinhole.toCameraFrame(glm::vec4(point, infinite ? 0.0f : 1.0f));
-    const float near = infinite ? 1e-4f : kPinholeNear;
+    const float near = infinite ? 1e-4f : kPinholeNearPlane;
     if (!(camera.z > near)) return projected;
     projected.screen = destination.pinhole.imagePoint(camera);
     projected.depth = camera.z;

@@ -193,6 +193,10 @@ inline void WarpSource::triangleVertices(uint32_t triangle, uint32_t vertices[3]
   }
 }
 
+// A pinhole destination shows no surface nearer to its camera than this;
+// the GPU warp clips at the same plane, so that the two agree.
+inline constexpr float kPinholeNearPlane = 0.01f;  // metres
+
 // A destination camera: an equirectangular panorama at a position, or a
 // pinhole camera. A panorama may be warped on a lattice of its pixels:
 // every stride-th row and column, pixel (x, y) of the layer being pixel

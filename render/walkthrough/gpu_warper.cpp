@@ -1,6 +1,7 @@
 #include "render/walkthrough/gpu_warper.h"
 
 #include "core/support/errors.h"
+#include "core/synthesis/warp.h"
 
 #include <algorithm>
 #include <bit>
@@ -10,8 +11,6 @@
 namespace triwalk {
 
 namespace {
-
-constexpr float kWarpNearPlane = 0.01f;  // metres, as the CPU pinhole warp
 
 // Whether an axis-aligned box may intersect the frustum of planes through
 // the camera (normals pointing inside).
@@ -148,7 +147,7 @@ void GpuWarper::drawLayer(const PinholeCamera& camera, const GpuPanorama& refere
   const glm::vec3 f = camera.forward(), r = camera.right(), u = camera.up();
   const float tanY = camera.tanHalfFovY(), tanX = tanY * camera.aspect();
   const std::array<glm::vec3, 5> normals = {f * tanX - r, f * tanX + r, f * tanY - u, f * tanY + u, f};
-  const std::array<float, 5> pointOffsets = {0.0f, 0.0f, 0.0f, 0.0f, kWarpNearPlane};
+  const std::array<float, 5> pointOffsets = {0.0f, 0.0f, 0.0f, 0.0f, kPinholeNearPlane};
   const std::array<float, 5> directionOffsets = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
   std::vector<GLsizei> counts;
   std::vector<const void*> offsets;
@@ -195,7 +194,7 @@ GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<cons
     layerProgram->use();
     layerProgram->set("colorTexture", 0);
     layerProgram->set("distanceTexture", 1);
-    layerProgram->set("viewProjection", pinholeViewProjection(camera, kWarpNearPlane));
+    layerProgram->set("viewProjection", pinholeViewProjection(camera, kPinholeNearPlane));
     layerProgram->set("cameraPosition", camera.position);
   }
   for (size_t k = 0; k < references.size(); ++k) {

@@ -8,6 +8,8 @@
 #include "core/image/color.h"
 #include "core/synthesis/blended_row_error.h"
 
+#include "tests/test_support.h"
+
 #include <doctest/doctest.h>
 
 #include <bit>
@@ -19,10 +21,6 @@
 using namespace triwalk;
 
 namespace {
-
-bool sameDoubleBits(double a, double b) {
-  return std::bit_cast<uint64_t>(a) == std::bit_cast<uint64_t>(b);
-}
 
 // A row of `count` pixels in `layerCount` layers: per pixel a front
 // distance, and each layer uncovered, sky, at the front, just inside or
@@ -93,8 +91,8 @@ TEST_CASE("a row's error in four lanes: the same sums as blending and comparing 
               anyHole |= pixel.hole;
             }
             INFO(layerCount << " layers, " << count << " pixels, stride " << truthStride);
-            CHECK(sameDoubleBits(lanes.result().rms, expected.result().rms));
-            CHECK(sameDoubleBits(lanes.result().badPercent, expected.result().badPercent));
+            CHECK(testing::sameBits(lanes.result().rms, expected.result().rms));
+            CHECK(testing::sameBits(lanes.result().badPercent, expected.result().badPercent));
             CHECK(lanes.result().total > 0.0);
             ++rowsChecked;
             rowsWithHoles += anyHole;
@@ -134,6 +132,6 @@ TEST_CASE("a row's error in four lanes: one pixel at a time, each case alone") {
       expected.add(0, displayColorFast(pixel.color), pixel.hole, truth[i]);
     }
     INFO("distances " << first << ", " << second);
-    CHECK(sameDoubleBits(lanes.result().total, expected.result().total));
+    CHECK(testing::sameBits(lanes.result().total, expected.result().total));
   }
 }

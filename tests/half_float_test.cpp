@@ -4,8 +4,10 @@
 // depend on the processor.
 
 #include "core/image/half_float.h"
+#include "tests/test_support.h"
 
 #include <Imath/half.h>
+
 #include <doctest/doctest.h>
 
 #include <bit>
@@ -65,8 +67,8 @@ TEST_CASE("halves to floats: the portable path gives Imath's value for every hal
       CHECK(std::isnan(portable[i]));
       CHECK(std::isnan(best[i]));
     } else {
-      CHECK(std::bit_cast<uint32_t>(portable[i]) == std::bit_cast<uint32_t>(expected));
-      CHECK(std::bit_cast<uint32_t>(best[i]) == std::bit_cast<uint32_t>(expected));
+      CHECK(testing::sameBits(portable[i], expected));
+      CHECK(testing::sameBits(best[i], expected));
     }
   }
   if (!hardwareHalfConversion()) MESSAGE("this processor has no F16C: only the portable path was checked");

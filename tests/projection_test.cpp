@@ -5,6 +5,8 @@
 #include "core/geometry/float_arc_tangent.h"
 #include "core/geometry/projection.h"
 
+#include "tests/test_support.h"
+
 #include <doctest/doctest.h>
 
 #include <bit>
@@ -16,10 +18,6 @@
 using namespace triwalk;
 
 namespace {
-
-bool sameFloatBits(float a, float b) {
-  return std::bit_cast<uint32_t>(a) == std::bit_cast<uint32_t>(b);
-}
 
 // Values that take every case of atan2Float, and ordinary ones between.
 std::vector<float> awkwardValues() {
@@ -63,14 +61,14 @@ TEST_CASE("the arc tangents give glibc 2.36's bits") {
     const float y = i % 2 ? uniform(random) : std::bit_cast<float>(uint32_t(random()));
     const float x = i % 2 ? uniform(random) : std::bit_cast<float>(uint32_t(random()));
     if (std::isnan(x) || std::isnan(y)) continue;
-    REQUIRE(sameFloatBits(atan2Float(y, x), std::atan2(y, x)));
-    REQUIRE(sameFloatBits(atanFloat(x), std::atan(x)));
-    REQUIRE(sameFloatBits(hypotFloat(x, y), std::hypot(x, y)));
+    REQUIRE(testing::sameBits(atan2Float(y, x), std::atan2(y, x)));
+    REQUIRE(testing::sameBits(atanFloat(x), std::atan(x)));
+    REQUIRE(testing::sameBits(hypotFloat(x, y), std::hypot(x, y)));
   }
   for (const float y : awkwardValues()) {
     for (const float x : awkwardValues()) {
       if (std::isnan(x) || std::isnan(y)) continue;
-      CHECK(sameFloatBits(atan2Float(y, x), std::atan2(y, x)));
+      CHECK(testing::sameBits(atan2Float(y, x), std::atan2(y, x)));
     }
   }
 }
@@ -98,13 +96,13 @@ TEST_CASE("four-lane arc tangents give the scalar bits and flag the special case
       const bool flagged = unhandled[lane] != 0;
       if (special) CHECK(flagged);
       if (std::isfinite(x[lane]) && std::isfinite(y[lane]))
-        CHECK(sameFloatBits(lengths[lane], hypotFloat(x[lane], y[lane])));
+        CHECK(testing::sameBits(lengths[lane], hypotFloat(x[lane], y[lane])));
       if (flagged) {
         ++unhandledCount;
         continue;
       }
       ++handled;
-      CHECK(sameFloatBits(lanes[lane], atan2Float(y[lane], x[lane])));
+      CHECK(testing::sameBits(lanes[lane], atan2Float(y[lane], x[lane])));
     }
   }
   CHECK(handled > 40000);
@@ -137,8 +135,8 @@ TEST_CASE("image points four at a time are imagePoint's, seam, poles and axes in
     for (size_t i = 0; i < directions.size(); ++i) {
       const glm::vec2 expected = projection.imagePoint(directions[i]);
       INFO("direction ", directions[i].x, " ", directions[i].y, " ", directions[i].z, ", yaw ", yaw);
-      REQUIRE(sameFloatBits(points[i].x, expected.x));
-      REQUIRE(sameFloatBits(points[i].y, expected.y));
+      REQUIRE(testing::sameBits(points[i].x, expected.x));
+      REQUIRE(testing::sameBits(points[i].y, expected.y));
       REQUIRE(points[i].x >= 0.0f);
       REQUIRE(points[i].x < 256.0f);
     }

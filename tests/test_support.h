@@ -7,6 +7,8 @@
 #include <doctest/doctest.h>
 #include <glm/vec2.hpp>
 
+#include <bit>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -34,6 +36,15 @@ std::string readTextFileOrEmpty(const std::filesystem::path& path);
 // Runs action, which must throw InputError whose one-line message contains
 // both the expected subject (a file name) and the expected problem text.
 void requireInputError(const std::function<void()>& action, const std::string& subject, const std::string& problem);
+
+// Whether two numbers have the same bits (so +0 and -0 differ, and a NaN
+// may equal itself).
+inline bool sameBits(float a, float b) {
+  return std::bit_cast<uint32_t>(a) == std::bit_cast<uint32_t>(b);
+}
+inline bool sameBits(double a, double b) {
+  return std::bit_cast<uint64_t>(a) == std::bit_cast<uint64_t>(b);
+}
 
 // Sample x * rows + y at (x, y), 1 m apart.
 std::vector<glm::dvec2> unitGrid(int columns, int rows);

@@ -1,11 +1,12 @@
 // The CPU reference warp, blend and error against scenes with known answers.
 
+#include "core/synthesis/warp.h"
 #include "core/image/color.h"
 #include "core/synthesis/blend.h"
 #include "core/synthesis/reconstruction_error.h"
 #include "core/synthesis/view_synthesis.h"
-#include "core/synthesis/warp.h"
 #include "tests/analytic_scene.h"
+#include "tests/test_support.h"
 
 #include <tbb/global_control.h>
 
@@ -312,8 +313,7 @@ TEST_CASE("a panorama's lattice warps to exactly the whole panorama's pixels the
                 const size_t j = size_t(y * stride) * size_t(kWidth) + size_t(x * stride);
                 covered += lattice.covered[i];
                 const bool same = lattice.covered[i] == whole.covered[j] &&
-                                  std::bit_cast<uint32_t>(lattice.distance.pixels[i]) ==
-                                      std::bit_cast<uint32_t>(whole.distance.pixels[j]) &&
+                                  testing::sameBits(lattice.distance.pixels[i], whole.distance.pixels[j]) &&
                                   lattice.color.pixels[i] == whole.color.pixels[j] &&
                                   lattice.reliability[i] == whole.reliability[j];
                 mismatches += same ? 0 : 1;

@@ -41,16 +41,16 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     return app.exit(error);
   } catch (const triwalk::InputError& error) {
-    std::fprintf(stderr, "triwalk: error: %s\n", error.what());
+    std::fprintf(stderr, "triwalk: error: %s\n", triwalk::printableLine(error.what()).c_str());
     return 1;
   } catch (const triwalk::Interrupted&) {
     std::fprintf(stderr, "triwalk: interrupted; no output written\n");
     return 130;
   } catch (const triwalk::GlUnavailable& error) {
-    std::fprintf(stderr, "triwalk: error: OpenGL: %s\n", error.what());
+    std::fprintf(stderr, "triwalk: error: OpenGL: %s\n", triwalk::printableLine(error.what()).c_str());
     return 1;
   } catch (const std::exception& error) {
-    std::fprintf(stderr, "triwalk: error: %s\n", error.what());
+    std::fprintf(stderr, "triwalk: error: %s\n", triwalk::printableLine(error.what()).c_str());
     return 1;
   }
   return 0;

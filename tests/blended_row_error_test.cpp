@@ -134,3 +134,30 @@ TEST_CASE("a row's error in four lanes: one pixel at a time, each case alone") {
     CHECK(testing::sameBits(lanes.result().total, expected.result().total));
   }
 }
+
+TEST_CASE("a pixel the blend gives no weight is an error like black, not an index far outside the sRGB table") {
+  // An empty interval (epsilon 0) leaves every covered pixel without a
+  // weight: its colour is 0 / 0. The lookup clamped with `<`, which NaN
+  // passes, and indexed the table with it (a segmentation fault reached
+  // from `decimate --epsilon 0` and from views at x = 1e30).
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  CHECK(linearToSrgbFast(nan) == 0.0f);
+  CHECK(toBytes(glm::vec3(nan)) == glm::u8vec3(0));
+  BlendOptions options;
+  options.epsilon = 0.0f;
+  DecodedLayerRow rows[2];
+  for (int k = 0; k < 2; ++k) {
+    rows[k].distance.assign(8, 2.0f + float(k));
+    rows[k].red.assign(8, 0.7f);
+    rows[k].green.assign(8, 0.7f);
+    rows[k].blue.assign(8, 0.7f);
+  }
+  const DecodedLayerRow* layers[2] = {&rows[0], &rows[1]};
+  const std::vector<float> weights = {1.0f, 1.0f};
+  const std::vector<glm::vec3> truth(8, glm::vec3(0.5f)), black(8, glm::vec3(0.0f));
+  ErrorAccumulator blended(8, 1, ErrorOptions{}), againstBlack(8, 1, ErrorOptions{});
+  addBlendedRowError(layers, weights, options, truth.data(), 1, 0, blended);
+  for (size_t i = 0; i < 8; ++i) againstBlack.add(0, glm::vec3(0.0f), false, truth[i]);
+  CHECK(std::isfinite(blended.result().total));
+  CHECK(blended.result().total == againstBlack.result().total);
+}

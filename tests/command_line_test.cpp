@@ -7,6 +7,7 @@
 #include "core/selection/selection.h"
 #include "core/selection/selection_inputs.h"
 #include "tests/analytic_scene.h"
+#include "tests/command_line_runner.h"
 #include "tests/test_support.h"
 
 #include <doctest/doctest.h>
@@ -20,28 +21,9 @@
 
 namespace triwalk {
 
-namespace {
-
-struct RunResult {
-  int status = 0;
-  std::string out, err;
-};
-
-// Runs triwalk with OpenGL: Mesa's own allocations (some in JIT code) look
-// like leaks to LeakSanitizer and cannot be suppressed by name, so under
-// the sanitizers such a run goes without leak detection
-// (docs/RELIABILITY.md, "Sanitizers"); elsewhere the variable is ignored.
-const std::string kTriwalkWithOpenGl = "ASAN_OPTIONS=\"$ASAN_OPTIONS:detect_leaks=0\" " + std::string(TRIWALK_BINARY);
-
-RunResult runTriwalk(const testing::TemporaryDirectory& scratch, const std::string& arguments, bool openGl = false) {
-  const std::filesystem::path out = scratch / "stdout.txt", err = scratch / "stderr.txt";
-  const std::string command =
-      (openGl ? kTriwalkWithOpenGl : std::string(TRIWALK_BINARY)) + " " + arguments + " > " + out.string() + " 2> " + err.string();
-  const int status = std::system(command.c_str());
-  return {status, testing::readTextFileOrEmpty(out), testing::readTextFileOrEmpty(err)};
-}
-
-}  // namespace
+using testing::kTriwalkWithOpenGl;
+using testing::RunResult;
+using testing::runTriwalk;
 
 TEST_CASE("bad options fail in one line naming the option, before any work, and write nothing") {
   testing::TemporaryDirectory directory;
@@ -55,8 +37,8 @@ TEST_CASE("bad options fail in one line naming the option, before any work, and 
   const std::vector<Case> cases = {
       {"decimate" + data + " --out " + selection + " --max-error nan", "--max-error: must be a finite number, got nan"},
       {"decimate" + data + " --out " + selection + " --max-error inf", "--max-error: must be a finite number, got inf"},
-      {"decimate" + data + " --out " + selection + " --max-error -1", "--max-error: must be positive, got -1"},
-      {"decimate" + data + " --out " + selection + " --relative-error 0", "--relative-error: must be positive, got 0"},
+      {"decimate" + data + " --out " + selection + " --max-error -1", "--max-error: must be from 1e-09 to 1e+09, got -1"},
+      {"decimate" + data + " --out " + selection + " --relative-error 0", "--relative-error: must be from 1e-06 to 1e+06, got 0"},
       {"decimate" + data + " --out " + selection + " --relative-error nan", "--relative-error: must be a finite number, got nan"},
       {"decimate" + data + " --out " + selection + " --max-error 1.5 --relative-error 1.2",
        "--max-error excludes --relative-error"},

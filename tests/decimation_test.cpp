@@ -430,9 +430,11 @@ TEST_CASE("selection.json round trip, and bad selections name the file and the p
   refused({{"grazing_angle", 95}}, "settings: grazing_angle must be from 0 to 89, not 95");
   refused({{"depth_ratio", 0.5}}, "settings: depth_ratio must be from 1 to 1000, not 0.5");
   refused({{"mesh_tolerance", -1}}, "settings: mesh_tolerance must be from 0 to 8, not -1");
-  refused({{"epsilon", 11}}, "settings: epsilon must be from 0 to 10, not 11");
-  refused({{"min_weight_distance", 0}}, "settings: min_weight_distance must be positive");
-  refused({{"delta", -2}}, "settings: delta must not be negative");
+  refused({{"epsilon", 11}}, "settings: epsilon must be from 0.0001 to 10, not 11");
+  refused({{"epsilon", 0}}, "settings: epsilon must be from 0.0001 to 10, not 0");
+  refused({{"alpha", 1e300}}, "settings: alpha must be from 0 to 1e+06, not 1e+300");
+  refused({{"min_weight_distance", 0}}, "settings: min_weight_distance must be from 0.001 to 10000, not 0");
+  refused({{"delta", -2}}, "settings: delta must be from 0 to 255, not -2");
   refused({{"point_warp", "yes"}}, "field 'settings.point_warp' is not true or false");
   refused({{"alpha", "ten"}}, "field 'settings.alpha' is not a number");
 
@@ -444,7 +446,8 @@ TEST_CASE("selection.json round trip, and bad selections name the file and the p
   CHECK(thresholds.maxError == 1.5);
   CHECK(thresholds.relativeError == 1.25);
   CHECK(lattice.maxError == 0.0);
-  refused({{"max_error", -1}}, "settings: max_error must not be negative");
+  refused({{"max_error", -1}}, "settings: max_error must be 0 (none) or from 1e-09 to 1e+09, not -1");
+  refused({{"relative_error", 1e300}}, "settings: relative_error must be 0 (none) or from 1e-06 to 1e+06, not 1e+300");
   refused({{"relative_error", "auto"}}, "field 'settings.relative_error' is not a number");
 
   // The collapse options, every one away from its default, and a file

@@ -3,6 +3,7 @@
 #include "app/commands/commands.h"
 #include "app/setup/option_checks.h"
 #include "app/setup/scene_capture.h"
+#include "core/io/exr_io.h"
 #include "core/io/json_fields.h"
 
 namespace triwalk {
@@ -27,14 +28,14 @@ void registerCaptureCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--out", arguments->out, "Output data set directory")->required()->check(writableDirectory());
   command->add_option("--paths", arguments->options.paths, "Number of parallel capture paths")
-      ->capture_default_str()->check(positiveNumber());
+      ->capture_default_str()->check(CLI::Range(1, int(kMaxViews)));
   command->add_option("--per-path", arguments->options.perPath, "Samples per path")
-      ->capture_default_str()->check(positiveNumber());
+      ->capture_default_str()->check(CLI::Range(1, int(kMaxViews)));
   command->add_option("--spacing", arguments->spacing,
                       "Metres between samples and between paths (overrides --paths and --per-path)")
       ->check(positiveNumber());
   command->add_option("--area", arguments->area, "Sampled rectangle x0,y0,x1,y1 in metres (default: the scene's)")
-      ->delimiter(',')->expected(4);
+      ->delimiter(',')->expected(4)->check(coordinate());
   command->add_option("--region", arguments->region,
                       "Walkable region file: {\"polygons\": [{\"outer\": [[x, y], ...], \"holes\": [...]}, ...]} in metres")
       ->check(CLI::ExistingFile)
@@ -42,15 +43,18 @@ void registerCaptureCommand(CLI::App& app) {
   command->add_option("--start", arguments->start,
                       "X,Y in metres: where the automatic region's flood fill starts (default: spawn points, else the "
                       "scene's centre)")
-      ->delimiter(',')->expected(2)->excludes("--area")->excludes("--region");
+      ->delimiter(',')->expected(2)->check(coordinate())->excludes("--area")->excludes("--region");
   command->add_option("--eye-height", arguments->eyeHeight, "Camera height above the floor, metres (default: the scene's)")
-      ->check(positiveNumber());
-  command->add_option("--width", arguments->options.width, "Panorama width in pixels (height = width / 2)")
-      ->capture_default_str();
-  command->add_option("--face-size", arguments->options.faceSize, "Cube face resolution (0: 3/8 of the width)")
-      ->capture_default_str();
+      ->check(positiveNumber())->check(coordinate());
+  command->add_option("--width", arguments->options.width,
+                      "Panorama width in pixels, even (height = width / 2); at most " + std::to_string(kMaxPanoramaWidth) +
+                          ", the widest a data set's views may be")
+      ->capture_default_str()->check(CLI::Range(16, kMaxPanoramaWidth));
+  command->add_option("--face-size", arguments->options.faceSize,
+                      "Cube face resolution (0: 3/8 of the width); at most the OpenGL renderbuffer size")
+      ->capture_default_str()->check(CLI::Range(0, kMaxPanoramaWidth));
   command->add_option("--probes", arguments->options.probes, "Held-out views at random positions")
-      ->capture_default_str();
+      ->capture_default_str()->check(CLI::Range(0, int(kMaxViews)));
   command->add_option("--seed", arguments->options.seed, "Seed of the probe positions")->capture_default_str();
   command->add_flag("--closed-doors", arguments->options.closedDoors,
                     "Draw door leaves (IFC door elements) in the captures (default: doors open, as the walkable "

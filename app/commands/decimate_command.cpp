@@ -30,14 +30,14 @@ void registerDecimateCommand(CLI::App& app) {
   command->add_option("--out", arguments->out, "Selection file to write (selection.json)")->required()->check(writableFile());
   CLI::Option* maxError = command->add_option(
       "--max-error", arguments->maxError, "Stop before a collapse whose error exceeds this absolute value (the paper's 1.85)")
-      ->check(positiveNumber());
+      ->check(within(kMaxErrorRange));
   char relativeHelp[256];
   std::snprintf(relativeHelp, sizeof relativeHelp,
                 "Stop before a collapse whose error exceeds this many times the dense triangulation's mean triangle error "
                 "(default %.2f, the paper's ratio, unless --max-error or --target is given)",
                 kDefaultRelativeError);
   command->add_option("--relative-error", arguments->relativeError, relativeHelp)
-      ->check(positiveNumber())->excludes(maxError);
+      ->check(within(kRelativeErrorRange))->excludes(maxError);
   command->add_option("--target", arguments->target, "Stop at this many samples (alone: no error threshold)")
       ->check(nonNegativeNumber());
   addSelectionOptions(*command, arguments->selection);

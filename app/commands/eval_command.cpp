@@ -12,7 +12,10 @@
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <functional>
+#include <optional>
 
 namespace triwalk {
 
@@ -65,24 +68,45 @@ void compareAtCounts(const Dataset& dataset, const Selection& selection, const s
   const int initialCount = ViewMesh(positions, selection.initialTriangles).vertexCount();
   std::printf("\nprobe mean error by sample count (edge collapse replayed from its log)\n\n");
   std::printf("| samples | edge collapse | uniform | k-medoids | random |\n|---|---|---|---|---|\n");
+  // A baseline that cannot be triangulated at a count shows "-" there, and
+  // its mean over the counts is left out.
   double sums[4] = {0, 0, 0, 0};
+  bool complete[4] = {true, true, true, true};
   for (int count : counts) {
     const size_t steps = *lastStepWithSamples(initialCount, selection.collapses, count);
-    const ViewMesh meshes[4] = {
-        datasetTriangles(dataset, replayForward(selection.initialTriangles, selection.collapses, steps)),
-        datasetMesh(dataset, uniformSelection(dataset, count), "uniform baseline"),
-        datasetMesh(dataset, kMedoidsSelection(positions, count), "k-medoids baseline"),
-        datasetMesh(dataset, randomSelection(dataset.sampleCount(), count, seed), "random baseline")};
-    double values[4];
+    const std::function<ViewMesh()> meshes[4] = {
+        [&] { return datasetTriangles(dataset, replayForward(selection.initialTriangles, selection.collapses, steps)); },
+        [&] { return datasetMesh(dataset, uniformSelection(dataset, count), "uniform baseline"); },
+        [&] { return datasetMesh(dataset, kMedoidsSelection(positions, count), "k-medoids baseline"); },
+        [&] { return datasetMesh(dataset, randomSelection(dataset.sampleCount(), count, seed), "random baseline"); }};
+    std::string cells[4];
     for (int m = 0; m < 4; ++m) {
-      values[m] = evaluateMesh("", meshes[m], errors).probeMeanError;
-      sums[m] += values[m];
+      std::optional<ViewMesh> mesh;
+      try {
+        mesh = meshes[m]();
+      } catch (const InputError&) {
+        if (m == 0) throw;
+        complete[m] = false;
+        cells[m] = "-";
+        continue;
+      }
+      const double value = evaluateMesh("", *mesh, errors).probeMeanError;
+      sums[m] += value;
+      char cell[48];
+      std::snprintf(cell, sizeof cell, m == 1 ? "%.4f (%d)" : "%.4f", value, mesh->vertexCount());
+      cells[m] = cell;
     }
-    std::printf("| %d | %.4f | %.4f (%d) | %.4f | %.4f |\n", count, values[0], values[1], meshes[1].vertexCount(), values[2],
-                values[3]);
+    std::printf("| %d | %s | %s | %s | %s |\n", count, cells[0].c_str(), cells[1].c_str(), cells[2].c_str(),
+                cells[3].c_str());
   }
   const double n = double(counts.size());
-  std::printf("| mean | %.4f | %.4f | %.4f | %.4f |\n", sums[0] / n, sums[1] / n, sums[2] / n, sums[3] / n);
+  std::string means[4];
+  for (int m = 0; m < 4; ++m) {
+    char cell[32];
+    std::snprintf(cell, sizeof cell, "%.4f", sums[m] / n);
+    means[m] = complete[m] ? cell : "-";
+  }
+  std::printf("| mean | %s | %s | %s | %s |\n", means[0].c_str(), means[1].c_str(), means[2].c_str(), means[3].c_str());
 }
 
 }  // namespace
@@ -126,12 +150,21 @@ void registerEvalCommand(CLI::App& app) {
       ViewMesh mesh;
     };
     std::vector<Row> rows;
+    // A baseline that cannot be triangulated at this count (its samples
+    // collinear, say) is named with the reason; the rest are evaluated.
+    std::vector<std::pair<std::string, std::string>> notBuilt;
+    auto addBaseline = [&](const std::string& method, const std::function<std::vector<int>()>& select) {
+      try {
+        rows.push_back({method, datasetMesh(dataset, select(), std::string(label(method)) + " baseline")});
+      } catch (const InputError& error) {
+        notBuilt.emplace_back(method, error.problem());
+      }
+    };
     rows.push_back({"initial", datasetMesh(dataset, {}, a.dataset)});
-    rows.push_back({"uniform", datasetMesh(dataset, uniformSelection(dataset, count), "uniform baseline")});
+    addBaseline("uniform", [&] { return uniformSelection(dataset, count); });
     rows.push_back({"edge_collapse", selectionMesh(selection, dataset)});
-    rows.push_back({"kmedoids", datasetMesh(dataset, kMedoidsSelection(positions, count), "k-medoids baseline")});
-    rows.push_back({"random", datasetMesh(dataset, randomSelection(dataset.sampleCount(), count, a.seed),
-                                                 "random baseline")});
+    addBaseline("kmedoids", [&] { return kMedoidsSelection(positions, count); });
+    addBaseline("random", [&] { return randomSelection(dataset.sampleCount(), count, a.seed); });
 
     std::vector<MethodEvaluation> evaluations;
     std::vector<UncoveredPositions> outside;  // the samples a walker finds outside every triangle, by row
@@ -144,6 +177,8 @@ void registerEvalCommand(CLI::App& app) {
       progress.advance();
     }
     progress.finish();
+    const auto collapse = std::find_if(evaluations.begin(), evaluations.end(),
+                                       [](const MethodEvaluation& e) { return e.method == "edge_collapse"; });
 
     std::printf("\nTable 1: %s, %d samples, %d probes; %s\n\n", dataset.manifest().scene.c_str(), dataset.sampleCount(),
                 dataset.probeCount(), describeErrorSettings(settings).c_str());
@@ -157,23 +192,29 @@ void registerEvalCommand(CLI::App& app) {
                   e.triangles, e.meanError, e.stdError, e.probeMeanError, e.probeStdError, outside[row].count,
                   outside[row].farthest);
     }
-    const MethodEvaluation& collapse = evaluations[2];
+    for (const auto& [method, reason] : notBuilt) {
+      std::printf("| %s | not built at %d samples: %s |\n", label(method), count, reason.c_str());
+    }
     std::printf("\nprobe mean error of edge collapse (%.4f) against the baselines: the change, +- one standard error of\n"
                 "the probe-by-probe differences, and the probes where edge collapse is lower:\n",
-                collapse.probeMeanError);
-    for (size_t row : {size_t(1), size_t(3), size_t(4)}) {
-      const MethodEvaluation& baseline = evaluations[row];
-      const PairedComparison paired = compareProbeErrors(collapse.probeErrors, baseline.probeErrors);
+                collapse->probeMeanError);
+    for (const MethodEvaluation& baseline : evaluations) {
+      if (baseline.method == "initial" || baseline.method == "edge_collapse") continue;
+      const PairedComparison paired = compareProbeErrors(collapse->probeErrors, baseline.probeErrors);
       std::printf("  %-12s %.4f  edge collapse %+.1f%% +- %.1f%%, lower at %d of %zu probes\n", label(baseline.method),
                   baseline.probeMeanError, 100.0 * paired.meanDifference / baseline.probeMeanError,
                   100.0 * paired.standardError / baseline.probeMeanError, paired.candidateLower,
-                  collapse.probeErrors.size());
+                  collapse->probeErrors.size());
     }
 
     if (!a.counts.empty()) compareAtCounts(dataset, selection, a.counts, a.seed, errors);
 
     if (!a.json.empty()) {
-      nlohmann::json document = {{"dataset", a.dataset}, {"settings", describeErrorSettings(settings)}, {"rows", nlohmann::json::array()}};
+      nlohmann::json document = {{"dataset", a.dataset},
+                                 {"settings", describeErrorSettings(settings)},
+                                 {"rows", nlohmann::json::array()},
+                                 {"not_built", nlohmann::json::object()}};
+      for (const auto& [method, reason] : notBuilt) document["not_built"][method] = reason;
       for (size_t row = 0; row < evaluations.size(); ++row) {
         const MethodEvaluation& e = evaluations[row];
         document["rows"].push_back({{"method", e.method},

@@ -2,8 +2,11 @@
 #include "app/setup/option_checks.h"
 #include "app/setup/view_ids.h"
 #include "core/io/dataset.h"
+#include "core/io/atomic_file.h"
 #include "core/io/png_io.h"
+#include "core/io/staged_directory.h"
 #include "core/support/errors.h"
+#include "core/support/progress.h"
 
 #include <cmath>
 #include <cstdio>
@@ -25,6 +28,9 @@ std::vector<const ViewRecord*> selectViews(const Dataset& dataset, const std::ve
   return views;
 }
 
+// Marks a folder export-png made, so that the next run may replace it.
+constexpr const char* kExportPngMarker = ".triwalk-export-png";
+
 }  // namespace
 
 void registerExportPngCommand(CLI::App& app) {
@@ -38,20 +44,33 @@ void registerExportPngCommand(CLI::App& app) {
   command->add_option("--dataset", arguments->dataset, "Data set directory")->required();
   command->add_option("--views", arguments->views, "Views: sample ids, pN for probes, or all")
       ->delimiter(',')->capture_default_str();
-  command->add_option("--out", arguments->out, "Output directory")->required()->check(writableDirectory());
+  command->add_option("--out", arguments->out,
+                      "Output directory, replaced as a whole (an existing one must be empty or hold an earlier "
+                      "export-png)")
+      ->required()->check(writableDirectory());
   command->add_option("--max-distance", arguments->maxDistance, "Distance shown red, metres")
       ->capture_default_str()->check(positiveNumber());
   command->callback([arguments] {
     const Dataset dataset = Dataset::open(arguments->dataset);
-    std::filesystem::create_directories(arguments->out);
-    for (const ViewRecord* view : selectViews(dataset, arguments->views)) {
+    const std::vector<const ViewRecord*> views = selectViews(dataset, arguments->views);
+    // Written beside --out and moved into place whole; an earlier
+    // export-png's folder (it holds the marker) is replaced.
+    StagedDirectory staging(arguments->out, kExportPngMarker, "an earlier export-png");
+    writeTextFileAtomically(staging.path() / kExportPngMarker, "written by triwalk export-png\n");
+    std::vector<std::string> written;
+    InterruptScope interruptScope;
+    for (const ViewRecord* view : views) {
+      throwIfInterrupted();
       const Panorama panorama = dataset.loadView(*view);
       const std::string stem = std::filesystem::path(view->file).stem().string();
-      const std::filesystem::path colorPath = std::filesystem::path(arguments->out) / (stem + "_color.png");
-      const std::filesystem::path distancePath = std::filesystem::path(arguments->out) / (stem + "_distance.png");
-      writePng(colorPath, toDisplayImage(panorama.color));
-      writePng(distancePath, distanceFalseColorImage(panorama.distance, arguments->maxDistance));
-      std::printf("%s, %s\n", colorPath.c_str(), distancePath.c_str());
+      writePng(staging.path() / (stem + "_color.png"), toDisplayImage(panorama.color));
+      writePng(staging.path() / (stem + "_distance.png"), distanceFalseColorImage(panorama.distance, arguments->maxDistance));
+      written.push_back(stem);
+    }
+    staging.commit();
+    const std::filesystem::path out(arguments->out);
+    for (const std::string& stem : written) {
+      std::printf("%s, %s\n", (out / (stem + "_color.png")).c_str(), (out / (stem + "_distance.png")).c_str());
     }
   });
 }

@@ -9,13 +9,12 @@
 #include "core/io/camera_path.h"
 #include "core/io/json_fields.h"
 #include "core/io/png_io.h"
+#include "core/io/staged_directory.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 #include "core/synthesis/blend.h"
 #include "render/gl/gl_context.h"
 #include "render/walkthrough/walkthrough_renderer.h"
-
-#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
@@ -47,34 +46,12 @@ Rgb8Image cpuReference(const Dataset& dataset, const std::array<int, 3>& referen
   return displayImage(synthesizeView(pointers, DestinationCamera::camera(camera), synthesis).blended, synthesis.holes);
 }
 
-// Frames go to a hidden folder inside --out and move into place once all
-// are rendered, so an interrupted or failed render leaves no partial set.
-class FrameStaging {
-public:
-  explicit FrameStaging(const std::filesystem::path& out)
-      : out_(out), staging_(out / (".tmp-render-" + std::to_string(::getpid()))), createdOut_(!std::filesystem::exists(out)) {
-    std::filesystem::create_directories(staging_);
-  }
-  ~FrameStaging() {
-    std::error_code ignored;
-    std::filesystem::remove_all(staging_, ignored);
-    if (!committed_ && createdOut_) std::filesystem::remove(out_, ignored);  // only if empty
-  }
-  FrameStaging(const FrameStaging&) = delete;
-  FrameStaging& operator=(const FrameStaging&) = delete;
+// --out may be replaced as a whole when it holds an earlier render: its
+// first frame marks it.
+constexpr const char* kRenderOutputMarker = "frame_0000.png";
 
-  const std::filesystem::path& folder() const { return staging_; }
-  void commit() {
-    for (const auto& entry : std::filesystem::directory_iterator(staging_)) {
-      std::filesystem::rename(entry.path(), out_ / entry.path().filename());
-    }
-    committed_ = true;
-  }
-
-private:
-  std::filesystem::path out_, staging_;
-  bool createdOut_ = false, committed_ = false;
-};
+// Enough for a walk of an hour at 30 frames a second.
+constexpr int kMaxPresetFrames = 108000;
 
 }  // namespace
 
@@ -96,15 +73,18 @@ void registerRenderCommand(CLI::App& app) {
                       "Camera path file (x y z yaw pitch a line), or the preset rotate (turn at --at) or translate "
                       "(--from to --to)")
       ->capture_default_str();
-  command->add_option("--out", arguments->out, "Directory for frame_NNNN.png")->required()->check(writableDirectory());
+  command->add_option("--out", arguments->out,
+                      "Directory for frame_NNNN.png, replaced as a whole (an existing one must be empty or hold an "
+                      "earlier render)")->required()->check(writableDirectory());
   command->add_option("--size", arguments->size, "Frame size WIDTHxHEIGHT")->capture_default_str();
   command->add_option("--fov", arguments->fov, "Vertical field of view, degrees")
       ->capture_default_str()->check(CLI::Range(10.0f, 150.0f));
-  command->add_option("--frames", arguments->frames, "Frames of a preset path (default: 36 rotate, 24 translate)");
+  command->add_option("--frames", arguments->frames, "Frames of a preset path (default: 36 rotate, 24 translate)")
+      ->check(CLI::Range(1, kMaxPresetFrames));
   command->add_option("--at", arguments->at, "rotate: position x,y[,z] (default: the middle of the samples)")
-      ->delimiter(',')->expected(2, 3);
-  command->add_option("--from", arguments->from, "translate: start x,y[,z]")->delimiter(',')->expected(2, 3);
-  command->add_option("--to", arguments->to, "translate: end x,y[,z]")->delimiter(',')->expected(2, 3);
+      ->delimiter(',')->expected(2, 3)->check(coordinate());
+  command->add_option("--from", arguments->from, "translate: start x,y[,z]")->delimiter(',')->expected(2, 3)->check(coordinate());
+  command->add_option("--to", arguments->to, "translate: end x,y[,z]")->delimiter(',')->expected(2, 3)->check(coordinate());
   command->add_option("--yaw", arguments->yaw, "translate: view yaw, degrees (default: sideways to the motion)")->expected(1);
   command->add_option("--pitch", arguments->pitch, "Pitch of preset paths, degrees")->capture_default_str();
   command->add_flag("--compare", arguments->compare,
@@ -113,7 +93,8 @@ void registerRenderCommand(CLI::App& app) {
                       "Write per-frame statistics (holes before the fill, left after it, frame time) to this JSON file")
       ->check(writableFile());
   command->add_flag("--show-sources", arguments->showSources, "Color each pixel by the references that made it");
-  command->add_option("--cache-mb", arguments->cacheMegabytes, "Memory for resident panoramas, MiB")->capture_default_str();
+  command->add_option("--cache-mb", arguments->cacheMegabytes, "Memory for resident panoramas, MiB")
+      ->capture_default_str()->check(CLI::Range(size_t(1), size_t(1) << 24));
   command->add_option("--gl", arguments->gl, "Headless OpenGL: auto, egl or osmesa")->capture_default_str();
   addRenderQualityOptions(*command, arguments->quality, SourceMesh::Grid);
 
@@ -154,7 +135,7 @@ void registerRenderCommand(CLI::App& app) {
     settings.blend = synthesis.blend;
     settings.holes = synthesis.holes;
     settings.showSources = a.showSources;
-    FrameStaging staging(a.out);
+    StagedDirectory staging(a.out, kRenderOutputMarker, "an earlier render");
     std::map<int, std::unique_ptr<WarpSource>> cpuSources;
     nlohmann::json statistics = {{"holes", holeModeName(synthesis.holes)},
                                  {"blend_weights", blendWeightsName(synthesis.blend.weights)},
@@ -186,7 +167,7 @@ void registerRenderCommand(CLI::App& app) {
       }
       char name[64];
       std::snprintf(name, sizeof name, "frame_%04zu", i);
-      const std::filesystem::path stem = staging.folder() / name;
+      const std::filesystem::path stem = staging.path() / name;
       writePng(stem.string() + ".png", image);
       if (a.compare) {
         const Rgb8Image reference = cpuReference(dataset, frame.references, camera, synthesis, cpuSources);

@@ -110,7 +110,8 @@ void registerSynthCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("synth", "Reconstruct a view from reference samples with the CPU warp");
   command->add_option("--dataset", arguments->dataset, "Data set directory")->required();
   command->add_option("--refs", arguments->references, "Reference sample ids, e.g. 12,13,27")->delimiter(',');
-  command->add_option("--at", arguments->at, "Destination position x,y,z in metres; default: the --truth view's")->delimiter(',')->expected(3);
+  command->add_option("--at", arguments->at, "Destination position x,y,z in metres; default: the --truth view's")
+      ->delimiter(',')->expected(3)->check(coordinate());
   command->add_option("--truth", arguments->truth, "Ground truth view (sample id or pN); default: a view at --at");
   command->add_option("--out", arguments->out, "Directory for reconstruction, truth and heatmap PNGs")->check(writableDirectory());
   command->add_option("--width", arguments->width, "Work at this panorama width (divides the data set's); 0 = full")

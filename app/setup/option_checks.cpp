@@ -1,8 +1,11 @@
 #include "app/setup/option_checks.h"
 
+#include "core/support/errors.h"
+
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <optional>
 
@@ -56,7 +59,28 @@ CLI::Validator positiveNumber() {
       "POSITIVE");
 }
 
-CLI::Validator within(OptionRange range) { return CLI::Range(range.lowest, range.highest); }
+CLI::Validator within(OptionRange range) {
+  return CLI::Validator(
+      [range](std::string& text) {
+        const std::optional<double> value = numberIn(text);
+        if (!value || !std::isfinite(*value) || range.contains(*value)) return std::string();
+        char bounds[64];
+        std::snprintf(bounds, sizeof bounds, "must be from %g to %g", double(range.lowest), double(range.highest));
+        return std::string(bounds) + ", got " + text;
+      },
+      "RANGE");
+}
+
+CLI::Validator coordinate() {
+  return CLI::Validator(
+      [](std::string& text) {
+        const std::optional<double> value = numberIn(text);
+        return value && std::isfinite(*value) && !withinCoordinateBound(*value)
+                   ? "must be within " + std::string(kCoordinateBoundText) + " of the origin, got " + text
+                   : std::string();
+      },
+      "METRES");
+}
 
 CLI::Validator errorStride() { return CLI::IsMember({1, 2, 4}); }
 
@@ -95,7 +119,7 @@ void hardenCommandLine(CLI::App& app) {
       },
       "");
   visit(app, finite);
-  app.failure_message([](const CLI::App*, const CLI::Error& error) { return "triwalk: error: " + std::string(error.what()) + " (see --help)\n"; });
+  app.failure_message([](const CLI::App*, const CLI::Error& error) { return "triwalk: error: " + printableLine(error.what()) + " (see --help)\n"; });
 }
 
 }  // namespace triwalk

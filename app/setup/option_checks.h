@@ -2,6 +2,7 @@
 // Checks that run while the command line is parsed, so a bad option fails
 // in one line before any data is loaded or any work starts.
 
+#include "core/support/input_limits.h"
 #include "core/support/option_range.h"
 
 #include <CLI/CLI.hpp>
@@ -14,6 +15,8 @@ CLI::Validator nonNegativeNumber();
 CLI::Validator positiveNumber();
 // The values an option shares with a selection file's settings.
 CLI::Validator within(OptionRange range);
+// A position coordinate in metres, within kMaxCoordinateMetres of the origin.
+CLI::Validator coordinate();
 // The lattices --error-stride offers (decimate, suite, view, bench): every
 // pixel, every other row and column, every fourth.
 CLI::Validator errorStride();

@@ -36,10 +36,14 @@ void addHoleOption(CLI::App& command, QualityArguments& arguments, HoleMode hole
 }
 
 void addBlendOptions(CLI::App& command, QualityArguments& arguments) {
-  command.add_option("--epsilon", arguments.epsilon, "Blend interval, relative to the nearest distance (Eq. 1)")
+  command.add_option("--epsilon", arguments.epsilon,
+                     "Blend interval, relative to the nearest distance (Eq. 1); above 0, or the nearest layer is "
+                     "outside its own interval")
       ->capture_default_str()->check(within(kEpsilonRange))->group("Blend");
-  command.add_option("--min-weight-distance", arguments.minimumWeightDistance, "r_min of the weights 1/max(d, r_min), metres")
-      ->capture_default_str()->check(positiveNumber())->group("Blend");
+  command.add_option("--min-weight-distance", arguments.minimumWeightDistance,
+                     "r_min of the weights 1/max(d, r_min), metres; from 1 mm (nearer, a reference at the viewer "
+                     "outweighs what a float holds) to 10 km (beyond, every weight is the same)")
+      ->capture_default_str()->check(within(kMinimumWeightDistanceRange))->group("Blend");
   command.add_option("--blend-weights", arguments.blendWeights,
                      "Weights within the interval: reliability (inverse distance times how well each reference sampled "
                      "the surface) or distance (inverse distance alone, the paper's)")
@@ -66,10 +70,12 @@ void addQualityOptions(CLI::App& command, QualityArguments& arguments, HoleMode 
   addHoleOption(command, arguments, holes,
                 "Holes after the blend: fill (the error sees the filled view, as a walker does), or mark / black "
                 "(the raw warp: holes count as black and as bad pixels, the paper's)");
-  command.add_option("--alpha", arguments.alpha, "Weight of R in E = alpha R + beta B")->capture_default_str()->group("Error");
-  command.add_option("--beta", arguments.beta, "Weight of B (percent of bad pixels)")->capture_default_str()->group("Error");
+  command.add_option("--alpha", arguments.alpha, "Weight of R in E = alpha R + beta B (0 to 1e6)")
+      ->capture_default_str()->check(within(kErrorWeightRange))->group("Error");
+  command.add_option("--beta", arguments.beta, "Weight of B (percent of bad pixels; 0 to 1e6)")
+      ->capture_default_str()->check(within(kErrorWeightRange))->group("Error");
   command.add_option("--delta", arguments.delta, "Bad-pixel tolerance on the 0..255 scale")
-      ->capture_default_str()->check(nonNegativeNumber())->group("Error");
+      ->capture_default_str()->check(within(kBadPixelToleranceRange))->group("Error");
   command.add_option("--pixel-weighting", arguments.pixelWeighting, "solid-angle (panoramas) or uniform (the paper's)")
       ->capture_default_str()->check(CLI::IsMember({"solid-angle", "uniform"}))->group("Error");
 }

@@ -2,6 +2,7 @@
 
 #include "core/geometry/planar_geometry.h"
 #include "core/support/errors.h"
+#include "core/support/input_limits.h"
 
 #include <algorithm>
 #include <cmath>
@@ -301,7 +302,12 @@ WalkableRegion WalkableRegion::fromJson(const nlohmann::json& value, const std::
       if (!point.is_array() || point.size() != 2 || !point[0].is_number() || !point[1].is_number()) {
         throw InputError(subject, where + "[" + std::to_string(i) + "]: a point is [x, y] in metres");
       }
-      result.emplace_back(point[0].get<double>(), point[1].get<double>());
+      const glm::dvec2 xy(point[0].get<double>(), point[1].get<double>());
+      if (!withinCoordinateBound(xy.x) || !withinCoordinateBound(xy.y)) {
+        throw InputError(subject, where + "[" + std::to_string(i) + "]: a coordinate is farther than " +
+                                      kCoordinateBoundText + " from the origin");
+      }
+      result.push_back(xy);
     }
     return result;
   };

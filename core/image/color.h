@@ -35,8 +35,9 @@ inline const float* srgbTable() {
   return table.data();
 }
 
+// NaN maps to 0 (std::clamp would pass it through to the table index).
 inline float linearToSrgbFast(float linear) {
-  const float x = std::clamp(linear, 0.0f, 1.0f) * float(kSrgbTableIntervals);
+  const float x = (linear >= 0.0f ? std::min(linear, 1.0f) : 0.0f) * float(kSrgbTableIntervals);
   const int i = int(x);
   const float* table = srgbTable();
   return table[i] + (x - float(i)) * (table[i + 1] - table[i]);
@@ -46,10 +47,12 @@ inline glm::vec3 displayColorFast(glm::vec3 linear) {
   return {linearToSrgbFast(linear.r), linearToSrgbFast(linear.g), linearToSrgbFast(linear.b)};
 }
 
-inline glm::u8vec3 toBytes(glm::vec3 display) {
-  const glm::vec3 scaled = glm::clamp(display, 0.0f, 1.0f) * 255.0f + 0.5f;
-  return {uint8_t(scaled.r), uint8_t(scaled.g), uint8_t(scaled.b)};
+// NaN becomes 0: converting it to an integer is undefined.
+inline uint8_t toByte(float display) {
+  return uint8_t((display >= 0.0f ? std::min(display, 1.0f) : 0.0f) * 255.0f + 0.5f);
 }
+
+inline glm::u8vec3 toBytes(glm::vec3 display) { return {toByte(display.r), toByte(display.g), toByte(display.b)}; }
 
 // Perceptually ordered false color for t in [0, 1] (a compact fit of the
 // "turbo" colormap); used for distance images and error heatmaps.

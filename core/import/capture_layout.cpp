@@ -1,5 +1,6 @@
 #include "core/import/capture_layout.h"
 
+#include "core/io/contained_path.h"
 #include "core/io/png_io.h"
 #include "core/support/errors.h"
 
@@ -33,6 +34,14 @@ std::vector<SourceView> scanCaptureLayout(CaptureLayout layout, const std::files
     case CaptureLayout::Folder: views = scanFolder(in, options); break;
   }
   if (views.empty()) throw InputError(in.string(), std::string("no views found in the ") + captureLayoutName(layout) + " layout");
+  // What the layout found must stay in the folder, as a data set's files
+  // must; a pose file given by --poses is the user's own choice.
+  for (const SourceView& view : views) {
+    requireInside(in, view.color, "the colour image of view '" + view.name + "'");
+    requireInside(in, view.depth.path, "the depth image of view '" + view.name + "'");
+    if (!view.mask.empty()) requireInside(in, view.mask, "the mask of view '" + view.name + "'");
+    if (options.poses.empty()) requireInside(in, view.poseFile, "the pose file");
+  }
   std::sort(views.begin(), views.end(), [](const SourceView& a, const SourceView& b) { return a.name < b.name; });
   return views;
 }

@@ -155,7 +155,7 @@ CaptureImportReport importCapture(const std::vector<SourceView>& views, const Ca
   }
   validateManifest(manifest, out.string());
 
-  StagedDirectory staging(out, kManifestFileName);
+  StagedDirectory staging(out, kManifestFileName, "a triwalk data set");
   createViewFolders(staging.path());
   CaptureImportReport report;
   report.width = size.x;

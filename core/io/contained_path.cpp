@@ -15,6 +15,15 @@ bool isInside(const std::filesystem::path& root, const std::filesystem::path& pa
 
 }  // namespace
 
+void requireInside(const std::filesystem::path& directory, const std::filesystem::path& path, const std::string& what) {
+  std::error_code error;
+  const std::filesystem::path root = std::filesystem::canonical(directory, error);
+  const std::filesystem::path target = error ? std::filesystem::path() : std::filesystem::canonical(path, error);
+  if (error || !isInside(root, target)) {
+    throw InputError(path.string(), what + " leads outside " + directory.string() + " (symlink)");
+  }
+}
+
 std::filesystem::path containedFile(const std::filesystem::path& directory, const std::string& entry,
                                     const std::string& subject) {
   const std::string quoted = "'" + entry + "'";

@@ -15,4 +15,9 @@ namespace triwalk {
 std::filesystem::path containedFile(const std::filesystem::path& directory, const std::string& entry,
                                     const std::string& subject);
 
+// Throws InputError naming path unless it lies inside directory after
+// following symlinks (the same rule for a capture folder being imported
+// as for a data set being read).
+void requireInside(const std::filesystem::path& directory, const std::filesystem::path& path, const std::string& what);
+
 }  // namespace triwalk

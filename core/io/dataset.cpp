@@ -5,8 +5,10 @@
 #include "core/io/exr_io.h"
 #include "core/io/json_fields.h"
 #include "core/support/errors.h"
+#include "core/support/input_limits.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <map>
@@ -52,6 +54,15 @@ std::string formatPosition(glm::vec3 p) {
 void validateViews(const std::vector<ViewRecord>& views, const std::string& kind, const std::string& subject) {
   std::map<int, size_t> ids;
   for (size_t i = 0; i < views.size(); ++i) {
+    const glm::vec3 p = views[i].position;
+    if (!withinCoordinateBound(p.x) || !withinCoordinateBound(p.y) || !withinCoordinateBound(p.z)) {
+      throw InputError(subject, kind + " " + std::to_string(views[i].id) + ": position " + formatPosition(p) +
+                                    " is farther than " + kCoordinateBoundText + " from the origin");
+    }
+    if (!(std::abs(views[i].yawDegrees) <= kMaxYawDegrees)) {
+      throw InputError(subject, kind + " " + std::to_string(views[i].id) + ": yaw_degrees is not within +-" +
+                                    std::to_string(int(kMaxYawDegrees)));
+    }
     if (!ids.emplace(views[i].id, i).second) {
       throw InputError(subject, kind + " id " + std::to_string(views[i].id) + " appears twice");
     }
@@ -69,6 +80,10 @@ void validateManifest(const Manifest& manifest, const std::string& subject) {
   if (manifest.samples.size() < 3) {
     throw InputError(subject, std::to_string(manifest.samples.size()) +
                                   " samples; at least 3 are needed to form a triangle");
+  }
+  if (manifest.samples.size() + manifest.probes.size() > kMaxViews) {
+    throw InputError(subject, std::to_string(manifest.samples.size() + manifest.probes.size()) +
+                                  " views; triwalk reads at most " + std::to_string(kMaxViews));
   }
   validateViews(manifest.samples, "sample", subject);
   validateViews(manifest.probes, "probe", subject);

@@ -4,6 +4,7 @@
 #include "core/support/errors.h"
 
 #include <cstring>
+#include <limits>
 #include <fstream>
 #include <iostream>
 
@@ -18,7 +19,7 @@ std::optional<DerivedFile> DerivedFiles::read(const std::filesystem::path& path,
   if (!std::filesystem::is_regular_file(path, error)) return std::nullopt;
   DerivedFile file{};
   try {
-    file.bytes = readTextFile(path);
+    file.bytes = readTextFile(path, std::numeric_limits<std::uintmax_t>::max());  // our own cache, any size
   } catch (const std::exception&) {
     return std::nullopt;
   }

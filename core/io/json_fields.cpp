@@ -2,12 +2,14 @@
 
 #include "core/io/atomic_file.h"
 
+#include <cstdint>
+#include <limits>
+
 #include <cmath>
 
 namespace triwalk {
 
 nlohmann::json readJsonFile(const std::filesystem::path& path) {
-  if (!std::filesystem::exists(path)) throw InputError(path.string(), "file does not exist");
   const std::string text = readTextFile(path);
   try {
     return nlohmann::json::parse(text);
@@ -77,11 +79,19 @@ double JsonObject::number(const std::string& key) const {
   return number;
 }
 
-int JsonObject::integer(const std::string& key) const {
-  const nlohmann::json& value = field(key);
-  if (!value.is_number_integer()) throw InputError(file_, "field '" + where(key) + "' is not an integer");
+int jsonInteger(const nlohmann::json& value, const std::string& file, const std::string& where) {
+  if (!value.is_number_integer()) throw InputError(file, where + " is not an integer");
+  // Read at full width first: get<int>() would keep the low 32 bits, so
+  // 4294967301 would read as 5.
+  const bool inRange = value.is_number_unsigned()
+                           ? value.get<std::uint64_t>() <= std::uint64_t(std::numeric_limits<int>::max())
+                           : value.get<std::int64_t>() >= std::numeric_limits<int>::min() &&
+                                 value.get<std::int64_t>() <= std::numeric_limits<int>::max();
+  if (!inRange) throw InputError(file, where + " " + value.dump() + " is out of range (at most 2147483647 in size)");
   return value.get<int>();
 }
+
+int JsonObject::integer(const std::string& key) const { return jsonInteger(field(key), file_, "field '" + where(key) + "'"); }
 
 bool JsonObject::boolean(const std::string& key) const {
   const nlohmann::json& value = field(key);
@@ -96,7 +106,8 @@ std::vector<float> JsonObject::numbers(const std::string& key, size_t count) con
   }
   std::vector<float> result;
   for (const nlohmann::json& element : value) {
-    if (!element.is_number() || !std::isfinite(element.get<double>())) {
+    // Finite as a double and as the float it is kept in (1e39 is not).
+    if (!element.is_number() || !std::isfinite(element.get<double>()) || !std::isfinite(element.get<float>())) {
       throw InputError(file_, "field '" + where(key) + "' holds a value that is not a finite number");
     }
     result.push_back(element.get<float>());

@@ -16,6 +16,10 @@ namespace triwalk {
 // Parses a JSON file; missing file and malformed JSON become InputError.
 nlohmann::json readJsonFile(const std::filesystem::path& path);
 
+// A JSON integer that fits an int, read at full width; InputError naming
+// file and where ("field 'samples[0].id'") otherwise.
+int jsonInteger(const nlohmann::json& value, const std::string& file, const std::string& where);
+
 // Writes pretty-printed JSON atomically.
 void writeJsonFile(const std::filesystem::path& path, const nlohmann::json& document);
 

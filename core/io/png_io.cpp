@@ -15,14 +15,25 @@
 
 namespace triwalk {
 
+namespace {
+
+void appendBytes(void* context, void* data, int size) {
+  auto* bytes = static_cast<std::string*>(context);
+  bytes->append(static_cast<const char*>(data), size_t(size));
+}
+
+}  // namespace
+
+// Encoded in memory and written by writeTextFileAtomically, whose write is
+// checked: stb's own file writer ignores a failed fwrite, so a full disk
+// left empty PNGs and exit status 0.
 void writePng(const std::filesystem::path& path, const Rgb8Image& image) {
   TRIWALK_CHECK(!image.empty(), "empty image");
-  writeFileAtomically(path, [&](const std::filesystem::path& temporary) {
-    if (!stbi_write_png(temporary.string().c_str(), image.width, image.height, 3, image.pixels.data(),
-                        image.width * 3)) {
-      throw InputError(path.string(), "cannot write PNG");
-    }
-  });
+  std::string bytes;
+  if (!stbi_write_png_to_func(appendBytes, &bytes, image.width, image.height, 3, image.pixels.data(), image.width * 3)) {
+    throw InputError(path.string(), "cannot encode PNG");
+  }
+  writeTextFileAtomically(path, bytes);
 }
 
 Rgb8Image readPng(const std::filesystem::path& path) {
@@ -63,17 +74,22 @@ Gray16Image readPng16(const std::filesystem::path& path) {
 
 void writePng16(const std::filesystem::path& path, const Gray16Image& image) {
   TRIWALK_CHECK(!image.empty(), "empty image");
-  writeFileAtomically(path, [&](const std::filesystem::path& temporary) {
-    png_image header{};
-    header.version = PNG_IMAGE_VERSION;
-    header.width = png_uint_32(image.width);
-    header.height = png_uint_32(image.height);
-    // LINEAR marks 16-bit samples stored as given, without gamma encoding.
-    header.format = PNG_FORMAT_LINEAR_Y;
-    if (!png_image_write_to_file(&header, temporary.string().c_str(), 0, image.pixels.data(), 0, nullptr)) {
-      throw InputError(path.string(), std::string("cannot write PNG: ") + header.message);
-    }
-  });
+  png_image header{};
+  header.version = PNG_IMAGE_VERSION;
+  header.width = png_uint_32(image.width);
+  header.height = png_uint_32(image.height);
+  // LINEAR marks 16-bit samples stored as given, without gamma encoding.
+  header.format = PNG_FORMAT_LINEAR_Y;
+  png_alloc_size_t size = 0;
+  if (!png_image_write_to_memory(&header, nullptr, &size, 0, image.pixels.data(), 0, nullptr)) {
+    throw InputError(path.string(), std::string("cannot encode PNG: ") + header.message);
+  }
+  std::string bytes(size, '\0');
+  if (!png_image_write_to_memory(&header, bytes.data(), &size, 0, image.pixels.data(), 0, nullptr)) {
+    throw InputError(path.string(), std::string("cannot encode PNG: ") + header.message);
+  }
+  bytes.resize(size);
+  writeTextFileAtomically(path, bytes);
 }
 
 Rgba8Image decodeImage(std::span<const uint8_t> bytes, const std::string& subject) {

@@ -1,7 +1,10 @@
 #pragma once
-// An output folder built beside its destination ("<out>.partial-triwalk")
-// and moved into place only when complete, so an error or Ctrl-C never
-// leaves a half-written data set where a whole one is expected.
+// An output folder built beside its destination and moved into place only
+// when complete, so an error or Ctrl-C never leaves a half-written data
+// set where a whole one is expected, and an earlier run's files never
+// stay beside this run's: the destination is replaced as a whole.
+
+#include "core/io/output_lock.h"
 
 #include <filesystem>
 #include <string>
@@ -10,10 +13,12 @@ namespace triwalk {
 
 class StagedDirectory {
 public:
-  // Refuses (InputError) a destination that exists, is not empty and does
-  // not hold ownMarker (e.g. manifest.json: a data set it may replace);
-  // with an empty marker any non-empty destination is refused.
-  StagedDirectory(std::filesystem::path destination, const std::string& ownMarker);
+  // Refuses (InputError) a destination that another triwalk is writing
+  // (OutputLock), and one that exists, is not empty and does not hold
+  // ownMarker (e.g. manifest.json: a data set it may replace; `kind` names
+  // such a folder in the message, "a triwalk data set"); with an empty
+  // marker any non-empty destination is refused.
+  StagedDirectory(std::filesystem::path destination, const std::string& ownMarker, const std::string& kind = "");
   ~StagedDirectory();  // removes the staging folder unless committed
   StagedDirectory(const StagedDirectory&) = delete;
   StagedDirectory& operator=(const StagedDirectory&) = delete;
@@ -23,7 +28,9 @@ public:
   void commit();
 
 private:
-  std::filesystem::path destination_, staging_;
+  std::filesystem::path destination_;
+  OutputLock lock_;
+  std::filesystem::path staging_;
   bool committed_ = false;
 };
 

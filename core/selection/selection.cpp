@@ -107,19 +107,15 @@ std::optional<TriangleErrorSettings> readSelectionErrors(const JsonObject& setti
   BlendOptions& blend = errors.synthesis.blend;
   if (settings.has("epsilon")) blend.epsilon = float(numberWithin(settings, "epsilon", kEpsilonRange));
   if (settings.has("min_weight_distance")) {
-    blend.minimumWeightDistance = float(settings.number("min_weight_distance"));
-    if (!(blend.minimumWeightDistance > 0.0f)) settings.fail("min_weight_distance must be positive");
+    blend.minimumWeightDistance = float(numberWithin(settings, "min_weight_distance", kMinimumWeightDistanceRange));
   }
   if (settings.has("blend_weights")) blend.weights = namedChoice(settings, "blend_weights", parseBlendWeights);
   if (settings.has("holes")) {
     errors.synthesis.holes = namedChoice(settings, "holes", [](const std::string& name) { return parseHoleMode(name); });
   }
-  if (settings.has("alpha")) errors.error.alpha = settings.number("alpha");
-  if (settings.has("beta")) errors.error.beta = settings.number("beta");
-  if (settings.has("delta")) {
-    errors.error.delta = settings.number("delta");
-    if (!(errors.error.delta >= 0.0)) settings.fail("delta must not be negative");
-  }
+  if (settings.has("alpha")) errors.error.alpha = numberWithin(settings, "alpha", kErrorWeightRange);
+  if (settings.has("beta")) errors.error.beta = numberWithin(settings, "beta", kErrorWeightRange);
+  if (settings.has("delta")) errors.error.delta = numberWithin(settings, "delta", kBadPixelToleranceRange);
   if (settings.has("pixel_weighting")) errors.error.weighting = namedChoice(settings, "pixel_weighting", parsePixelWeighting);
   try {
     checkErrorStride(errors, "error_stride", "holes");
@@ -134,11 +130,10 @@ public:
   SelectionReader(const Dataset& dataset, const std::string& file) : dataset_(dataset), file_(file) {}
 
   int sample(const nlohmann::json& value, const std::string& where) const {
-    if (!value.is_number_integer()) throw InputError(file_, where + ": sample id is not an integer");
-    const int index = dataset_.sampleIndexOfId(value.get<int>());
+    const int id = jsonInteger(value, file_, where + ": sample id");
+    const int index = dataset_.sampleIndexOfId(id);
     if (index < 0) {
-      throw InputError(file_, where + ": sample id " + std::to_string(value.get<int>()) + " is not in " +
-                                  dataset_.manifestPath().string());
+      throw InputError(file_, where + ": sample id " + std::to_string(id) + " is not in " + dataset_.manifestPath().string());
     }
     return index;
   }
@@ -258,20 +253,26 @@ Selection readSelection(const std::filesystem::path& path, const Dataset& datase
     const JsonObject settings = root.object("settings");
     selection.settings = settings.json();
     selection.errors = readSelectionErrors(settings, dataset);
-    auto threshold = [&](const std::string& key) {
+    auto threshold = [&](const std::string& key, OptionRange range) {
       const double value = settings.has(key) ? settings.number(key) : 0.0;
-      if (!(value >= 0.0)) settings.fail(key + " must not be negative");
+      if (value != 0.0 && !range.contains(value)) {
+        std::ostringstream problem;
+        problem << key << " must be 0 (none) or from " << range.lowest << " to " << range.highest << ", not " << value;
+        settings.fail(problem.str());
+      }
       return value;
     };
-    selection.maxError = threshold("max_error");
-    selection.relativeError = threshold("relative_error");
+    selection.maxError = threshold("max_error", kMaxErrorRange);
+    selection.relativeError = threshold("relative_error", kRelativeErrorRange);
     if (settings.has("cost")) selection.decimation = readDecimationOptions(settings);
   }
   const nlohmann::json& samples = root.array("samples");
   std::set<int> kept;
   for (size_t i = 0; i < samples.size(); ++i) {
     const int index = reader.sample(samples[i], "samples[" + std::to_string(i) + "]");
-    if (!kept.insert(index).second) root.fail("samples: id " + std::to_string(samples[i].get<int>()) + " appears twice");
+    if (!kept.insert(index).second) {
+      root.fail("samples: id " + std::to_string(dataset.sample(index).id) + " appears twice");
+    }
   }
   selection.samples.assign(kept.begin(), kept.end());
   if (selection.samples.size() < 3) root.fail("a selection needs at least 3 samples");

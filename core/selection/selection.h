@@ -36,6 +36,12 @@
 
 namespace triwalk {
 
+// Thresholds a selection file can hold (a threshold that overflows to
+// infinity would be written as null): past a million times the dense
+// error, or an absolute 1e9 (E stays below 1.1e8), nothing is refused.
+inline constexpr OptionRange kRelativeErrorRange{1e-6f, 1e6f};
+inline constexpr OptionRange kMaxErrorRange{1e-9f, 1e9f};
+
 constexpr int kSelectionFormatVersion = 1;
 
 struct Selection {

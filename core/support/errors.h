@@ -31,6 +31,11 @@ public:
   Interrupted() : std::runtime_error("interrupted") {}
 };
 
+// A message fit for one terminal line: bytes that are not printable ASCII
+// (from a corrupt file echoed in the message) written as \xNN, and the
+// whole cut to about maxLength characters with "..." where it was cut.
+std::string printableLine(const std::string& message, size_t maxLength = 400);
+
 [[noreturn]] void failCheck(const char* condition, const char* file, int line, const std::string& message);
 
 }  // namespace triwalk

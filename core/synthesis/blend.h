@@ -39,7 +39,13 @@ struct BlendOptions {
   bool operator==(const BlendOptions&) const = default;
 };
 
-inline constexpr OptionRange kEpsilonRange{0.0f, 10.0f};
+// The interval must be wider than nothing, or the nearest layer falls
+// outside its own interval and a pixel has no weight (a NaN colour).
+inline constexpr OptionRange kEpsilonRange{1e-4f, 10.0f};
+// r_min in metres: below a millimetre a reference at the destination
+// would weigh more than a float holds beside the others; beyond 10 km
+// every weight is the same 1 / r_min in any scene triwalk reads.
+inline constexpr OptionRange kMinimumWeightDistanceRange{1e-3f, 1e4f};
 
 struct BlendedView {
   ColorImage color;                  // linear; black in holes

@@ -13,9 +13,12 @@ namespace {
 constexpr size_t kMaxLayers = 8;
 constexpr size_t kBlockPixels = 64;  // differences handed to the accumulator at once
 
-// linearToSrgbFast lane by lane (std::clamp, then the table's interpolation).
+// linearToSrgbFast lane by lane (clamped to [0, 1], then the table's
+// interpolation). The first test is written so that NaN (a blend with no
+// weight) fails it and becomes 0: NaN passes every `<` clamp and would
+// index the table with a garbage integer.
 Floats4 displayChannel(Floats4 linear) {
-  linear = linear < 0.0f ? splat(0.0f) : linear;
+  linear = linear >= 0.0f ? linear : splat(0.0f);
   linear = 1.0f < linear ? splat(1.0f) : linear;
   const Floats4 x = linear * float(kSrgbTableIntervals);
   const Masks4 index = __builtin_convertvector(x, Masks4);

@@ -9,6 +9,7 @@
 // in the paper.
 
 #include "core/image/image.h"
+#include "core/support/option_range.h"
 
 #include <algorithm>
 #include <cmath>
@@ -30,6 +31,11 @@ struct ErrorOptions {
   double delta = 15.0;  // on the 0..255 scale
   PixelWeighting weighting = PixelWeighting::SolidAngle;
 };
+
+// E = alpha R + beta B stays finite and ordered for weights up to a
+// million (R <= 1, B <= 100); the tolerance is on the 0..255 scale.
+inline constexpr OptionRange kErrorWeightRange{0.0f, 1e6f};
+inline constexpr OptionRange kBadPixelToleranceRange{0.0f, 255.0f};
 
 struct ReconstructionError {
   double rms = 0.0;         // R

@@ -4,6 +4,7 @@
 #include "core/io/staged_directory.h"
 #include "core/selection/selection_inputs.h"
 #include "core/support/errors.h"
+#include "core/support/input_limits.h"
 #include "core/support/progress.h"
 #include "render/capture/panorama_capturer.h"
 
@@ -24,6 +25,37 @@ float unitRandom(std::mt19937& engine) { return float(engine() >> 8) * (1.0f / 1
 
 namespace {
 
+// A request is refused before anything is allocated for it: the plan holds
+// a record per view.
+void checkViewCount(double views, const std::string& option, const std::string& what) {
+  if (!(views <= double(kMaxViews))) {
+    char count[32];
+    std::snprintf(count, sizeof count, "%.3g", views);
+    throw InputError(option, std::string("gives ") + count + " " + what + "; a data set holds at most " +
+                                 std::to_string(kMaxViews) + " views");
+  }
+}
+
+// What the views' OpenEXR files take at least (half-float colour, float
+// distance, compressed: about 4.4 bytes a pixel on the built-in scene,
+// more on photographs), against the free space where they go: a request
+// that cannot fit is refused before the first view is rendered.
+void checkDiskSpace(const CapturePlan& plan, int width, const std::filesystem::path& outDirectory) {
+  constexpr double kLeastBytesPerPixel = 4.0;
+  const double views = double(plan.samples.size() + plan.probes.size());
+  const double bytes = views * double(width) * double(width / 2) * kLeastBytesPerPixel;
+  std::error_code error;
+  std::filesystem::path folder = std::filesystem::absolute(outDirectory, error);
+  while (!std::filesystem::exists(folder, error) && folder.has_relative_path()) folder = folder.parent_path();
+  const std::filesystem::space_info space = std::filesystem::space(folder, error);
+  if (!error && bytes > double(space.available)) {
+    char text[160];
+    std::snprintf(text, sizeof text, "%.0f views at %dx%d need about %.1f GiB on disk; %.1f GiB are free in %s", views,
+                  width, width / 2, bytes / double(1 << 30), double(space.available) / double(1 << 30), folder.c_str());
+    throw InputError(outDirectory.string(), text);
+  }
+}
+
 // Samples on parallel paths across the rectangle.
 void planRectangle(const CaptureOptions& options, CapturePlan& plan) {
   const glm::vec2 lower(plan.area.x, plan.area.y), upper(plan.area.z, plan.area.w);
@@ -34,9 +66,14 @@ void planRectangle(const CaptureOptions& options, CapturePlan& plan) {
   const float longSide = pathsAlongY ? size.x : size.y;
   const float shortSide = pathsAlongY ? size.y : size.x;
   if (options.spacing) {
-    plan.paths = int(std::floor(longSide / *options.spacing + 1e-4f)) + 1;
-    plan.perPath = int(std::floor(shortSide / *options.spacing + 1e-4f)) + 1;
+    // Counted in double first: a tiny spacing overflows an int.
+    const double paths = std::floor(double(longSide) / *options.spacing + 1e-4) + 1.0;
+    const double perPath = std::floor(double(shortSide) / *options.spacing + 1e-4) + 1.0;
+    checkViewCount(paths * perPath, "--spacing", "samples");
+    plan.paths = int(paths);
+    plan.perPath = int(perPath);
   } else {
+    checkViewCount(double(options.paths) * double(options.perPath), "--paths/--per-path", "samples");
     plan.paths = options.paths;
     plan.perPath = options.perPath;
   }
@@ -76,11 +113,9 @@ void planRegion(const CaptureOptions& options, const WalkableRegion& region, Cap
   const double spacing = options.spacing ? double(*options.spacing)
                                          : std::sqrt(region.area() / double(std::max(1, options.paths * options.perPath)));
   const glm::dvec2 extent = upper - lower;
+  checkViewCount(std::ceil(extent.x / spacing) * std::ceil(extent.y / spacing), "--spacing", "lattice positions");
   plan.paths = std::max(1, int(std::ceil(extent.x / spacing - 1e-9)));
   plan.perPath = std::max(1, int(std::ceil(extent.y / spacing - 1e-9)));
-  if (double(plan.paths) * double(plan.perPath) > 4e6) {
-    throw InputError("--spacing", "gives a lattice of over 4 million positions over the region; use a larger spacing");
-  }
   plan.spacing = float(spacing);
   // Centred in the bounds, so a lattice of cell centres stays on them.
   const glm::dvec2 margin = 0.5 * (extent - spacing * glm::dvec2(plan.paths - 1, plan.perPath - 1));
@@ -126,7 +161,10 @@ CapturePlan planCapture(const Scene& scene, const CaptureOptions& options) {
   const glm::vec2 lower(plan.area.x, plan.area.y), size = glm::vec2(plan.area.z, plan.area.w) - lower;
   std::mt19937 engine(options.seed);
   const float minimumSeparation = 0.05f * plan.spacing;
+  checkViewCount(double(plan.samples.size()) + double(options.probes), "--probes", "views");
+  size_t tries = 0;
   while (int(plan.probes.size()) < options.probes) {
+    if (++tries % 4096 == 0) throwIfInterrupted();
     const glm::vec2 xy = lower + glm::vec2(unitRandom(engine), unitRandom(engine)) * size;
     if (plan.region && !region.contains(glm::dvec2(xy))) continue;
     bool onSample = false;
@@ -148,13 +186,14 @@ CaptureSummary captureDataset(const Scene& sceneWithDoors, const std::string& sc
   const bool hasDoors = sceneWithDoors.passableMeshCount() > 0;
   std::optional<Scene> doorsOpen;
   const Scene& scene = hasDoors && !options.closedDoors ? doorsOpen.emplace(withDoorsOpen(sceneWithDoors)) : sceneWithDoors;
+  InterruptScope interruptScope;
   const CapturePlan plan = planCapture(scene, options);
-  StagedDirectory staging(outDirectory, kManifestFileName);
+  checkDiskSpace(plan, options.width, outDirectory);
+  StagedDirectory staging(outDirectory, kManifestFileName, "a triwalk data set");
   createViewFolders(staging.path());
 
   CaptureSummary summary;
   {
-    InterruptScope interruptScope;
     PanoramaCapturer capturer(scene, options.width, options.faceSize);
     summary.sceneTriangles = capturer.sceneTriangles();
     std::vector<const ViewRecord*> views;

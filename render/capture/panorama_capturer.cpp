@@ -1,8 +1,13 @@
 #include "render/capture/panorama_capturer.h"
 
+#include "core/support/errors.h"
+#include "core/synthesis/warp_layer_cache.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <optional>
+#include <string>
 
 namespace triwalk {
 
@@ -48,6 +53,29 @@ void setSkyUniforms(ShaderProgram& program, const SkyModel& sky) {
 
 }  // namespace
 
+namespace {
+
+// The cube faces and the panorama must fit the GL implementation and the
+// memory left, or the capture fails later as an incomplete framebuffer
+// (or is killed) without naming what was asked.
+void checkCaptureSize(int width, int faceSize, const char* option) {
+  GLint largestCube = 0;
+  glGetIntegerv(GL_MAX_CUBE_MAP_TEXTURE_SIZE, &largestCube);
+  if (faceSize > largestCube) {
+    throw InputError(option, "cube faces of " + std::to_string(faceSize) + " pixels; this OpenGL allows at most " +
+                                 std::to_string(largestCube));
+  }
+  // Colour (RGBA16F), plane (RGBA32F), distance and depth (32-bit) on six
+  // faces, and the panorama's colour and distance targets.
+  const double bytes = 6.0 * double(faceSize) * double(faceSize) * (8 + 16 + 4 + 4) + double(width) * double(width / 2) * 24;
+  if (const std::optional<size_t> available = availableMemoryBytes(); available && bytes > double(*available)) {
+    throw InputError(option, "a capture at this size needs about " + std::to_string(int(bytes / double(1 << 20))) +
+                                 " MiB of memory; " + std::to_string(*available >> 20) + " MiB are available");
+  }
+}
+
+}  // namespace
+
 int defaultCubeFaceSize(int width) { return std::max(16, (width * 3 / 8 + 7) / 8 * 8); }
 
 PanoramaCapturer::PanoramaCapturer(const Scene& scene, int width, int faceSize)
@@ -59,6 +87,7 @@ PanoramaCapturer::PanoramaCapturer(const Scene& scene, int width, int faceSize)
       distanceProgram_("scene.vert", "scene_distance.frag"),
       skyProgram_("fullscreen.vert", "capture_sky.frag"),
       equirectProgram_("fullscreen.vert", "capture_equirect.frag") {
+  checkCaptureSize(width_, faceSize_, faceSize > 0 ? "--face-size" : "--width");
   colorCube_ = createTexture(GL_TEXTURE_CUBE_MAP);
   glTextureStorage2D(colorCube_.get(), 1, GL_RGBA16F, faceSize_, faceSize_);
   glTextureParameteri(colorCube_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);

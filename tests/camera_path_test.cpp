@@ -29,7 +29,7 @@ TEST_CASE("bad camera paths give one-line errors naming the file and the line") 
     writeTextFileAtomically(file, text);
     return [&] { readCameraPath(file); };
   };
-  testing::requireInputError([&] { readCameraPath(directory / "missing.txt"); }, "missing.txt", "cannot open file");
+  testing::requireInputError([&] { readCameraPath(directory / "missing.txt"); }, "missing.txt", "file does not exist");
   testing::requireInputError(read("# only a comment\n"), file.string(), "no poses in the camera path");
   testing::requireInputError(read("0 0 1.6 0 0\n1 2 3\n"), file.string(), "line 2: expected 'x y z yaw pitch'");
   testing::requireInputError(read("0 0 1.6 0 0 7\n"), file.string(), "line 1: expected 'x y z yaw pitch'");

@@ -9,6 +9,7 @@
 #include "core/io/exr_io.h"
 #include "core/io/json_fields.h"
 #include "core/selection/selection.h"
+#include "fuzz/numeric_drive.h"
 #include "tests/test_support.h"
 
 #include <doctest/doctest.h>
@@ -68,6 +69,28 @@ TEST_CASE("inputs that crashed or hung a fuzzer are read or refused with a one-l
   CHECK(inputs >= 1);
 }
 
+
+TEST_CASE("the numeric harness's corpus: each input refused in one line or driven through decimate and eval, finite") {
+  // fuzz/seeds/numeric is the harness's corpus after its runs, merged to
+  // the inputs that reach new code (docs/RELIABILITY.md, "Fuzzing"); a
+  // crash, an exception other than InputError or a non-finite error aborts.
+  const std::filesystem::path root = std::filesystem::path(TRIWALK_SOURCE_DIR) / "fuzz";
+  testing::TemporaryDirectory scratch;
+  size_t driven = 0, refused = 0;
+  for (const char* folder : {"seeds/numeric", "regressions/numeric"}) {
+    if (!std::filesystem::exists(root / folder)) continue;
+    for (const auto& entry : std::filesystem::directory_iterator(root / folder)) {
+      CAPTURE(entry.path());
+      const std::string bytes = testing::readTextFileOrEmpty(entry.path());
+      const bool accepted = fuzz::driveNumbers(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(),
+                                               root / "seeds/dataset", scratch.path());
+      (accepted ? driven : refused) += 1;
+    }
+  }
+  MESSAGE(driven << " inputs driven through, " << refused << " refused");
+  CHECK(driven >= 10);
+  CHECK(refused >= 10);
+}
 
 TEST_CASE("EXR headers claiming more than the file holds are refused before OpenEXR allocates for them") {
   // OpenEXR would allocate and clear the claimed sizes first (seconds under

@@ -93,6 +93,8 @@ TEST_CASE("numbers no computation can use are refused where they enter, in one l
       {"capture --out " + out + " --paths 100000 --per-path 100000", "--paths/--per-path: gives 1e+10 samples"},
       {"capture --out " + out + " --spacing 0.001", "--spacing: gives 5e+07 samples"},
       {"capture --out " + out + " --spacing 1e-9", "--spacing: gives 5e+19 samples"},
+      // A million views at 4096 x 2048 need about 31 TiB: refused before the first is rendered.
+      {"capture --out " + out + " --width 4096 --probes 1000000", "1000450 views at 4096x2048 need about 31264.1 GiB on disk"},
   };
   for (const auto& [arguments, message] : cases) {
     CAPTURE(arguments);
@@ -214,11 +216,25 @@ TEST_CASE("import follows no symlink out of --in, as the data set reader follows
   REQUIRE_FALSE(color.empty());
   std::filesystem::rename(color, directory / "outside.png");
   std::filesystem::create_symlink(directory / "outside.png", color);
-  const RunResult run = runTriwalk(directory, "import --quiet --from folder --in " + exported.string() + " --out " +
-                                                  (directory / "imported").string());
+  const std::string import = "import --quiet --from folder --in " + exported.string() + " --out " +
+                             (directory / "imported").string();
+  RunResult run = runTriwalk(directory, import);
   INFO("stderr: " << run.err);
   CHECK(isOneLineError(run));
   CHECK(run.err.find("leads outside " + exported.string() + " (symlink)") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(directory / "imported"));
+
+  // A pose no computation can use is refused before any view is converted.
+  std::filesystem::remove(color);
+  std::filesystem::rename(directory / "outside.png", color);
+  std::string poses = testing::readTextFileOrEmpty(exported / "poses.csv");
+  const size_t x = poses.find(',', poses.find('\n') + 1) + 1;  // the first view's x
+  poses.replace(x, poses.find(',', x) - x, "1e30");
+  std::ofstream(exported / "poses.csv") << poses;
+  run = runTriwalk(directory, import);
+  INFO("poses: " << poses << "\nstderr: " << run.err);
+  CHECK(isOneLineError(run));
+  CHECK(run.err.find("is farther than 100 km (1e5 m) from the origin") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(directory / "imported"));
 }
 

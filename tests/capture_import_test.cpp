@@ -316,7 +316,7 @@ TEST_CASE("bad captures give one line naming the file, before any image is conve
   };
   const auto expectNothingWritten = [&] {
     CHECK_FALSE(std::filesystem::exists(out));
-    CHECK_FALSE(std::filesystem::exists(out.string() + ".partial-triwalk"));
+    CHECK(testing::countEntries(out.parent_path(), out.filename().string() + ".partial-triwalk") == 0);
   };
 
   SUBCASE("an unreadable colour image") {

@@ -38,15 +38,6 @@ void editManifest(const std::filesystem::path& dataset, const std::function<void
   std::ofstream(dataset / kManifestFileName) << manifest.dump(1);
 }
 
-size_t countFiles(const std::filesystem::path& folder, const std::string& prefix) {
-  if (!std::filesystem::is_directory(folder)) return 0;
-  size_t count = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
-    count += entry.path().filename().string().starts_with(prefix);
-  }
-  return count;
-}
-
 // A folder on a filesystem of `bytes`: a tmpfs where this process may mount
 // (root, as CI runs), unmounted by the destructor.
 class SmallFilesystem {
@@ -244,12 +235,13 @@ TEST_CASE("render replaces its output folder as a whole: no frame of an earlier 
   const std::string render = "render --size 64x48 --dataset " + (directory / "data").string() + " --out " +
                              (directory / "frames").string();
   REQUIRE(runTriwalk(directory, render + " --frames 10", true).status == 0);
-  CHECK(countFiles(directory / "frames", "frame_") == 10);
+  CHECK(testing::countEntries(directory / "frames", "frame_") == 10);
   const RunResult again = runTriwalk(directory, render + " --frames 3", true);
   INFO("stderr: " << again.err);
   REQUIRE(again.status == 0);
-  CHECK(countFiles(directory / "frames", "frame_") == 3);
-  CHECK(countFiles(directory.path(), ".frames") == 0);  // no lock file or staging folder left
+  CHECK(testing::countEntries(directory / "frames", "frame_") == 3);
+  CHECK(testing::countEntries(directory.path(), ".frames.triwalk-lock") == 0);
+  CHECK(testing::countEntries(directory.path(), "frames.partial-triwalk") == 0);
 
   std::filesystem::create_directories(directory / "mine");
   std::ofstream(directory / "mine" / "notes.txt") << "keep\n";
@@ -258,7 +250,7 @@ TEST_CASE("render replaces its output folder as a whole: no frame of an earlier 
                                        true);
   CHECK(isOneLineError(refused));
   CHECK(refused.err.find("mine: exists and is not an earlier render; refusing to overwrite it") != std::string::npos);
-  CHECK(countFiles(directory / "mine", "") == 1);
+  CHECK(testing::countEntries(directory / "mine", "") == 1);
 }
 
 TEST_CASE("a second writer of the same output is refused in one line while the first finishes whole") {
@@ -285,8 +277,8 @@ TEST_CASE("a second writer of the same output is refused in one line while the f
   CHECK(dataset.sampleCount() == 36);
   CHECK(dataset.probeCount() == 20);
   CHECK(dataset.manifest().width == 512);
-  CHECK(countFiles(directory.path(), "cap.partial") == 0);
-  CHECK(countFiles(directory.path(), ".cap.triwalk-lock") == 0);
+  CHECK(testing::countEntries(directory.path(), "cap.partial") == 0);
+  CHECK(testing::countEntries(directory.path(), ".cap.triwalk-lock") == 0);
 }
 
 TEST_CASE("a full disk fails render, export-png and region in one line and leaves no partial file") {
@@ -319,8 +311,9 @@ TEST_CASE("a full disk fails render, export-png and region in one line and leave
     CHECK(last.starts_with("triwalk: error: "));
     CHECK(err.find("triwalk: error: ") == err.size() - last.size());
     CHECK((err.find("No space left on device") != std::string::npos || err.find("File too large") != std::string::npos));
+    CHECK(err.find("partial-triwalk") == std::string::npos);  // names the output, not the staging folder
     // Nothing is left in the full folder: no frame, no staging folder, no temporary, no lock.
-    CHECK(countFiles(full, "") == 0);
+    CHECK(testing::countEntries(full, "") == 0);
   }
 }
 

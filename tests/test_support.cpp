@@ -20,6 +20,16 @@ TemporaryDirectory::~TemporaryDirectory() {
   std::filesystem::remove_all(path_, ignored);
 }
 
+size_t countEntries(const std::filesystem::path& folder, const std::string& prefix) {
+  std::error_code error;
+  if (!std::filesystem::is_directory(folder, error)) return 0;
+  size_t count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    count += entry.path().filename().string().starts_with(prefix);
+  }
+  return count;
+}
+
 std::string readTextFileOrEmpty(const std::filesystem::path& path) {
   std::ifstream stream(path);
   return std::string(std::istreambuf_iterator<char>(stream), {});

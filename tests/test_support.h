@@ -30,6 +30,9 @@ private:
   std::filesystem::path path_;
 };
 
+// The entries of folder whose names start with prefix (0 when it is not a folder).
+size_t countEntries(const std::filesystem::path& folder, const std::string& prefix);
+
 // The file's text, or an empty string if it cannot be read.
 std::string readTextFileOrEmpty(const std::filesystem::path& path);
 

@@ -56,15 +56,20 @@ void registerExportPngCommand(CLI::App& app) {
     // Written beside --out and moved into place whole; an earlier
     // export-png's folder (it holds the marker) is replaced.
     StagedDirectory staging(arguments->out, kExportPngMarker, "an earlier export-png");
-    writeTextFileAtomically(staging.path() / kExportPngMarker, "written by triwalk export-png\n");
+    staging.writeFile(kExportPngMarker, [](const std::filesystem::path& path) {
+      writeTextFileAtomically(path, "written by triwalk export-png\n");
+    });
     std::vector<std::string> written;
     InterruptScope interruptScope;
     for (const ViewRecord* view : views) {
       throwIfInterrupted();
       const Panorama panorama = dataset.loadView(*view);
       const std::string stem = std::filesystem::path(view->file).stem().string();
-      writePng(staging.path() / (stem + "_color.png"), toDisplayImage(panorama.color));
-      writePng(staging.path() / (stem + "_distance.png"), distanceFalseColorImage(panorama.distance, arguments->maxDistance));
+      staging.writeFile(stem + "_color.png",
+                        [&](const std::filesystem::path& path) { writePng(path, toDisplayImage(panorama.color)); });
+      staging.writeFile(stem + "_distance.png", [&](const std::filesystem::path& path) {
+        writePng(path, distanceFalseColorImage(panorama.distance, arguments->maxDistance));
+      });
       written.push_back(stem);
     }
     staging.commit();

@@ -165,15 +165,17 @@ void registerRenderCommand(CLI::App& app) {
                                         {"unfilled", double(holes.unfilled) / double(holes.pixels)},
                                         {"ms", milliseconds}});
       }
-      char name[64];
-      std::snprintf(name, sizeof name, "frame_%04zu", i);
-      const std::filesystem::path stem = staging.path() / name;
-      writePng(stem.string() + ".png", image);
+      char stem[64];
+      std::snprintf(stem, sizeof stem, "frame_%04zu", i);
+      auto write = [&](const std::string& suffix, const Rgb8Image& picture) {
+        staging.writeFile(stem + suffix, [&](const std::filesystem::path& path) { writePng(path, picture); });
+      };
+      write(".png", image);
       if (a.compare) {
         const Rgb8Image reference = cpuReference(dataset, frame.references, camera, synthesis, cpuSources);
         if (cpuSources.size() > 9) cpuSources.clear();
-        writePng(stem.string() + "_cpu.png", reference);
-        writePng(stem.string() + "_diff.png", heatmapImage(differenceImage(image, reference), 0.25f));
+        write("_cpu.png", reference);
+        write("_diff.png", heatmapImage(differenceImage(image, reference), 0.25f));
         const double value = psnr(image, reference);
         psnrSum += value;
         worstPsnr = std::min(worstPsnr, value);

@@ -44,6 +44,15 @@ StagedDirectory::StagedDirectory(std::filesystem::path destination, const std::s
   if (error) throw InputError(staging_.string(), "cannot create directory: " + error.message());
 }
 
+void StagedDirectory::writeFile(const std::string& name,
+                                const std::function<void(const std::filesystem::path&)>& write) const {
+  try {
+    write(staging_ / name);
+  } catch (const InputError& error) {
+    throw InputError((destination_ / name).string(), error.problem());
+  }
+}
+
 StagedDirectory::~StagedDirectory() {
   if (committed_) return;
   std::error_code ignored;

@@ -7,6 +7,7 @@
 #include "core/io/output_lock.h"
 
 #include <filesystem>
+#include <functional>
 #include <string>
 
 namespace triwalk {
@@ -24,6 +25,10 @@ public:
   StagedDirectory& operator=(const StagedDirectory&) = delete;
 
   const std::filesystem::path& path() const { return staging_; }
+  // Calls write(path() / name); a failure (InputError) is reported under
+  // the name the file would have had in the destination, not the staging
+  // folder's, which is gone by the time the user reads the message.
+  void writeFile(const std::string& name, const std::function<void(const std::filesystem::path&)>& write) const;
   // Replaces the destination with the staging folder.
   void commit();
 

@@ -9,7 +9,9 @@
 
 #include <malloc.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <string_view>
 
 int main(int argc, char** argv) {
   // Decimation allocates and frees a few hundred kilobytes per warp, tens of
@@ -21,6 +23,8 @@ int main(int argc, char** argv) {
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
   CLI::App app{"triwalk: select reference panoramas by edge-collapse decimation and walk through them"};
   app.require_subcommand(1);
+  // Before the subcommands, which inherit it.
+  app.set_help_all_flag("--help-all", "Print this help with every option, those that tune the method too");
   triwalk::registerCaptureCommand(app);
   triwalk::registerImportCommand(app);
   triwalk::registerExportCommand(app);
@@ -35,6 +39,9 @@ int main(int argc, char** argv) {
   triwalk::registerViewCommand(app);
 #endif
   triwalk::registerBenchCommand(app);
+  if (std::none_of(argv, argv + argc, [](const char* argument) { return std::string_view(argument) == "--help-all"; })) {
+    triwalk::hideExpertOptions(app);
+  }
   triwalk::hardenCommandLine(app);
   try {
     app.parse(argc, argv);

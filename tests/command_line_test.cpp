@@ -368,3 +368,33 @@ TEST_CASE("import and export from the command line: a round trip, its report, an
 }
 
 }  // namespace triwalk
+
+namespace triwalk {
+
+TEST_CASE("help lists what a user needs, and --help-all the options that tune the method too") {
+  testing::TemporaryDirectory directory;
+  const RunResult help = runTriwalk(directory, "decimate --help");
+  REQUIRE(help.status == 0);
+  for (const char* everyday : {"--dataset", "--out", "--relative-error", "--target", "--refine-radius", "--error-stride",
+                               "--holes", "--help-all"}) {
+    CHECK_MESSAGE(help.out.find(everyday) != std::string::npos, everyday);
+  }
+  for (const char* expert : {"--priced-samples", "--recosting", "--refine-screen", "--refine-priced", "--one-ring",
+                             "--unweighted-cost", "--fixed-boundary", "--epsilon", "--alpha", "--grazing-angle"}) {
+    CHECK_MESSAGE(help.out.find(expert) == std::string::npos, expert);
+  }
+  const RunResult all = runTriwalk(directory, "decimate --help-all");
+  REQUIRE(all.status == 0);
+  for (const char* expert : {"--priced-samples", "--recosting", "--refine-screen", "--epsilon", "--alpha"}) {
+    CHECK_MESSAGE(all.out.find(expert) != std::string::npos, expert);
+  }
+  // Hidden from --help, not from the parser.
+  testing::writeAnalyticDataset(directory / "data", 3, 3, 32, 0);
+  const RunResult expertRun = runTriwalk(directory, "decimate --quiet --target 4 --priced-samples 4 --epsilon 0.06 --dataset " +
+                                                        (directory / "data").string() + " --out " +
+                                                        (directory / "s.json").string());
+  INFO(expertRun.err);
+  CHECK(expertRun.status == 0);
+}
+
+}  // namespace triwalk

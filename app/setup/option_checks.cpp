@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <set>
+#include <string>
 
 namespace triwalk {
 
@@ -110,6 +112,32 @@ CLI::Validator writableDirectory() {
       },
       "DIR");
 }
+
+namespace {
+
+// Everything else is what a user of the command needs: its inputs and
+// outputs, the quality target, --holes, --blend-weights, --source-mesh,
+// the error width and --error-stride, the refinement radius.
+const std::set<std::string> kExpertOptions = {
+    "--stretch-test", "--grazing-angle", "--depth-ratio", "--point-warp",   "--mesh-tolerance",  "--epsilon",
+    "--min-weight-distance", "--alpha",  "--beta",        "--delta",        "--pixel-weighting", "--triangle-destinations",
+    "--cost",         "--fixed-boundary", "--one-ring",   "--unweighted-cost", "--priced-samples", "--recosting",
+    "--exchanges",    "--refine-screen", "--refine-priced"};
+
+void hideIn(CLI::App& command) {
+  bool hidden = false;
+  for (CLI::Option* option : command.get_options()) {
+    if (kExpertOptions.count(option->get_name(false, true)) == 0) continue;
+    option->group("");
+    hidden = true;
+  }
+  if (hidden) command.footer("Options that tune the method (warp, blend and error constants, other collapse rules): --help-all");
+  for (CLI::App* subcommand : command.get_subcommands([](CLI::App*) { return true; })) hideIn(*subcommand);
+}
+
+}  // namespace
+
+void hideExpertOptions(CLI::App& app) { hideIn(app); }
 
 void hardenCommandLine(CLI::App& app) {
   const CLI::Validator finite(

@@ -26,6 +26,11 @@ CLI::Validator writableFile();
 // nearest folder above it that exists.
 CLI::Validator writableDirectory();
 
+// Hides the options that tune the method rather than use it (warp, blend
+// and error constants, the decimator's alternative rules) from --help;
+// --help-all lists them with the rest. They work the same either way.
+void hideExpertOptions(CLI::App& app);
+
 // Gives every floating-point option of every command a check that refuses
 // NaN and infinities (CLI11's range checks let NaN through), and makes
 // parse errors one line.

@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
   // thousands of times; glibc would serve each from fresh zeroed pages
   // (mmap, then trimmed back): 7% of its profile in page faults, and the
   // first 150 collapses run 25% faster with the buffers kept in the heap
-  // (docs/BENCHMARKS.md, "Where the decimation's time goes").
+  // (docs/history/BENCHMARKS-2026-11.md, "Where the decimation's time goes").
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
   CLI::App app{"triwalk: select reference panoramas by edge-collapse decimation and walk through them"};

@@ -42,7 +42,7 @@ TEST_CASE("walking frames settle on the largest scale that fits the budget, what
   const double budget = 33.0;
   const float step = FrameScaleController::kScaleStep;
   // The first two have a fixed part that is most of a small frame, as
-  // the setup of the triangles in view is on llvmpipe (docs/BENCHMARKS.md):
+  // the setup of the triangles in view is on llvmpipe (docs/history/BENCHMARKS-2026-11.md):
   // there a scale's time predicted from another's alone is too high above
   // it, and only trying the step up finds that it fits.
   for (const SimulatedMachine shape : {SimulatedMachine{20.0, 80.0}, SimulatedMachine{19.0, 122.0},

@@ -193,7 +193,7 @@ void benchViewer(BenchTable& table, const Dataset& dataset, const std::string& s
       if (holdBudget && sourceMesh == SourceMesh::Simplified) {
         // The viewer's default, issue 15's figure: frame times on llvmpipe
         // move by several milliseconds from one walk to the next on the
-        // same machine (docs/BENCHMARKS.md, 2026-11-28), so several walks
+        // same machine (docs/history/BENCHMARKS-2026-11.md, 2026-11-28), so several walks
         // are pooled and each one's figures shown.
         std::vector<Walk> walks;
         for (int k = 0; k < kPooledWalks; ++k) walks.push_back(walk(dataset, mesh, poses, sourceMesh, true));

@@ -4,6 +4,7 @@
 #include "app/commands/commands.h"
 #include "app/setup/decimation_options.h"
 #include "app/setup/option_checks.h"
+#include "core/image/image_annotation.h"
 #include "core/io/json_fields.h"
 #include "core/io/png_io.h"
 #include "core/selection/baselines.h"
@@ -39,7 +40,7 @@ void writeHeatmaps(const std::filesystem::path& directory, const MethodEvaluatio
     ScalarImage perPixel;
     errors.errorAt(triangle, dataset.probe(p).position, errors.probeDisplay(p), &perPixel);
     writePng(directory / (evaluation.method + "_p" + std::to_string(dataset.probe(p).id) + ".png"),
-             heatmapImage(perPixel, 0.25f));
+             withColourBar(heatmapImage(perPixel, 0.25f), 0.25f, "per-pixel RMS colour difference to the probe"));
   }
 }
 

@@ -5,6 +5,7 @@
 #include "app/setup/option_checks.h"
 #include "app/setup/quality_options.h"
 #include "app/setup/walkthrough_setup.h"
+#include "core/image/image_annotation.h"
 #include "core/image/image_compare.h"
 #include "core/io/camera_path.h"
 #include "core/io/json_fields.h"
@@ -175,7 +176,8 @@ void registerRenderCommand(CLI::App& app) {
         const Rgb8Image reference = cpuReference(dataset, frame.references, camera, synthesis, cpuSources);
         if (cpuSources.size() > 9) cpuSources.clear();
         write("_cpu.png", reference);
-        write("_diff.png", heatmapImage(differenceImage(image, reference), 0.25f));
+        write("_diff.png", withColourBar(heatmapImage(differenceImage(image, reference), 0.25f), 0.25f,
+                                         "per-pixel RMS colour difference, GPU against CPU"));
         const double value = psnr(image, reference);
         psnrSum += value;
         worstPsnr = std::min(worstPsnr, value);

@@ -6,6 +6,7 @@
 #include "app/setup/quality_options.h"
 #include "app/setup/view_ids.h"
 #include "core/image/color.h"
+#include "core/image/image_annotation.h"
 #include "core/io/dataset.h"
 #include "core/io/png_io.h"
 #include "core/io/simplified_mesh_store.h"
@@ -164,7 +165,8 @@ void registerSynthCommand(CLI::App& app) {
                 result.error.badPercent, result.error.total);
     if (!a.out.empty()) {
       writePng(std::filesystem::path(a.out) / "truth.png", toDisplayImage(truth->color));
-      writePng(std::filesystem::path(a.out) / "heatmap.png", heatmapImage(result.perPixel, 0.25f));
+      writePng(std::filesystem::path(a.out) / "heatmap.png", withColourBar(heatmapImage(result.perPixel, 0.25f), 0.25f,
+                                                                                   "per-pixel RMS colour difference to the truth"));
       std::printf("wrote reconstruction.png, truth.png, heatmap.png (per-pixel RMS difference, red = 0.25) to %s\n",
                   a.out.c_str());
     }

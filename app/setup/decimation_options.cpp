@@ -74,7 +74,7 @@ void addSelectionOptions(CLI::App& command, SelectionArguments& arguments) {
   command
       .add_option("--refine-screen", arguments.refineScreen,
                   "Share of the dense samples (a fixed random subset) the refinement ranks candidate moves on "
-                  "before scoring the best few on all of them (faster, and it misses moves: see docs/RESULTS.md); 0: "
+                  "before scoring the best few on all of them (faster, and it misses moves: see docs/history/RESULTS-2026-11.md); 0: "
                   "every candidate on all of them")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));

@@ -4,7 +4,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -124,20 +126,30 @@ const std::set<std::string> kExpertOptions = {
     "--cost",         "--fixed-boundary", "--one-ring",   "--unweighted-cost", "--priced-samples", "--recosting",
     "--exchanges",    "--refine-screen", "--refine-priced"};
 
-void hideIn(CLI::App& command) {
-  bool hidden = false;
-  for (CLI::Option* option : command.get_options()) {
-    if (kExpertOptions.count(option->get_name(false, true)) == 0) continue;
-    option->group("");
-    hidden = true;
+// --help without the expert options. They are left out of the listing,
+// not hidden in CLI11's way (an empty group), which would also drop
+// their names from CLI11's own error messages.
+class EverydayFormatter : public CLI::Formatter {
+public:
+  std::string make_group(std::string group, bool isPositional, std::vector<const CLI::Option*> options) const override {
+    std::erase_if(options, [](const CLI::Option* option) { return kExpertOptions.count(option->get_name(false, true)) > 0; });
+    return options.empty() ? std::string() : CLI::Formatter::make_group(std::move(group), isPositional, std::move(options));
   }
-  if (hidden) command.footer("Options that tune the method (warp, blend and error constants, other collapse rules): --help-all");
-  for (CLI::App* subcommand : command.get_subcommands([](CLI::App*) { return true; })) hideIn(*subcommand);
+};
+
+void hideIn(CLI::App& command, const std::shared_ptr<CLI::Formatter>& formatter) {
+  command.formatter(formatter);
+  const std::vector<CLI::Option*> options = command.get_options();
+  if (std::any_of(options.begin(), options.end(),
+                  [](const CLI::Option* option) { return kExpertOptions.count(option->get_name(false, true)) > 0; })) {
+    command.footer("Options that tune the method (warp, blend and error constants, other collapse rules): --help-all");
+  }
+  for (CLI::App* subcommand : command.get_subcommands([](CLI::App*) { return true; })) hideIn(*subcommand, formatter);
 }
 
 }  // namespace
 
-void hideExpertOptions(CLI::App& app) { hideIn(app); }
+void hideExpertOptions(CLI::App& app) { hideIn(app, std::make_shared<EverydayFormatter>()); }
 
 void hardenCommandLine(CLI::App& app) {
   const CLI::Validator finite(

@@ -31,13 +31,13 @@ void registerViewCommand(CLI::App& app) {
       ->check(nonNegativeNumber());
   command->add_option("--error-stride", arguments->errorStride, "Compute the decimation's errors on every N-th row and "
                       "column of the error panorama, as decimate's --error-stride (2: about 2.6x the collapses a "
-                      "second, at a measured cost in quality: docs/RESULTS.md); default: the selection's, else 1")
+                      "second, at a measured cost in quality: docs/history/RESULTS-2026-11.md); default: the selection's, else 1")
       ->check(errorStride());
   command->add_option("--frames", arguments->frames, "Render this many frames, write --screenshot and exit");
   command->add_option("--screenshot", arguments->screenshot, "With --frames: PNG of the window at the last frame")->check(writableFile());
   command->add_option("--path", arguments->path, "With --frames: camera path file (x y z yaw pitch a line)");
   // Simplified meshes: a walk fits the frame budget at a higher resolution
-  // (docs/BENCHMARKS.md, "stored simplified meshes, and the scaling row");
+  // (docs/history/BENCHMARKS-2026-11.md, "stored simplified meshes, and the scaling row");
   // render keeps the grid.
   addRenderQualityOptions(*command, arguments->quality, SourceMesh::Simplified);
   command->callback([arguments] {

@@ -8,7 +8,7 @@
 // may differ. So results never depend on the processor. The warped-layer
 // cache converts every pixel of every cached layer, and reading them with
 // Imath's 256 KiB table was the largest share of a decimation's blend
-// (docs/BENCHMARKS.md).
+// (docs/history/BENCHMARKS-2026-11.md).
 
 #include <cstdint>
 #include <span>

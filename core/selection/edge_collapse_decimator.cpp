@@ -770,7 +770,7 @@ const EdgeCollapseDecimator::HeapEntry* EdgeCollapseDecimator::peekValid() {
 // far above the count asked for (oacmpdm1: 133 of 469 samples for any
 // target). Only as a last resort, because taking these whenever they are
 // cheapest changed selections that never got stuck, for the worse on the
-// built-in scene (docs/RESULTS.md, "References off straight stretches of
+// built-in scene (docs/history/RESULTS-2026-11.md, "References off straight stretches of
 // the boundary"). If none of those is valid (none refused either), a
 // boundary reference may leave with all its triangles (simulateRemoval):
 // no collapse ever cuts a ring of triangles, so a loop of corridors

@@ -17,7 +17,7 @@ namespace triwalk {
 
 // The quality target when none is given: stop before a collapse whose
 // error exceeds this many times the dense triangulation's mean triangle
-// error (docs/RESULTS.md, "A quality target for any scene").
+// error (docs/history/RESULTS-2026-11.md, "A quality target for any scene").
 inline constexpr double kDefaultRelativeError = 1.36;
 
 struct SelectionSettings {

@@ -11,7 +11,7 @@
 // shrinks the covered region and can never put a reference back where it
 // took the last ones away: on a floor of rooms joined by doors, the
 // collapses that were cheapest one at a time left whole rooms without a
-// reference (docs/RESULTS.md, "The selection suite"). The exchanges undo
+// reference (docs/history/RESULTS-2026-11.md, "The selection suite"). The exchanges undo
 // such choices wherever they are; the local moves then settle each
 // reference among its neighbours. The dense samples measure what every
 // step costs and gains directly.

@@ -62,7 +62,7 @@ TriangleDestinations parseTriangleDestinations(const std::string& name);
 const char* triangleDestinationsName(TriangleDestinations destinations);
 
 // Errors at most this wide unless asked (the width the main job and
-// docs/RESULTS.md measure at); commands pick the largest width not above it
+// docs/history/RESULTS-2026-11.md measure at); commands pick the largest width not above it
 // that divides the data set's (Dataset::largestWidthAtMost).
 inline constexpr int kDefaultErrorWidth = 256;
 // The error width for a request: `requested` if given (> 0), else that
@@ -71,7 +71,7 @@ inline constexpr int kDefaultErrorWidth = 256;
 int errorWidthFor(const Dataset& dataset, int requested);
 
 // What decimation and evaluation measure the error on unless asked: the
-// raw warp, holes counted as black and bad (the paper's); docs/RESULTS.md,
+// raw warp, holes counted as black and bad (the paper's); docs/history/RESULTS-2026-11.md,
 // "Hole filling", has both measured.
 inline constexpr HoleMode kDefaultErrorHoles = HoleMode::Black;
 
@@ -83,7 +83,7 @@ inline constexpr HoleMode kDefaultErrorHoles = HoleMode::Black;
 // its references; the selection's job is to place references, and the
 // distance weights keep that cost visible. Measured on the six-scene
 // suite: decimating with distance and evaluating with reliability beat
-// decimating with reliability on 11 of 18 rows (docs/RESULTS.md, "Rerun
+// decimating with reliability on 11 of 18 rows (docs/history/RESULTS-2026-11.md, "Rerun
 // with blend weights by reliability").
 inline constexpr BlendWeights kSelectionBlendWeights = BlendWeights::Distance;
 
@@ -92,7 +92,7 @@ inline constexpr BlendWeights kSelectionBlendWeights = BlendWeights::Distance;
 // meshes make an error 1.65x faster at 256x128 and the main job's
 // decimation a quarter shorter, with selections as good on the held-out
 // probes of the suite's six scenes (+0.2% +- 0.8% over its 18 rows,
-// paired; docs/RESULTS.md, "Selecting on simplified meshes").
+// paired; docs/history/RESULTS-2026-11.md, "Selecting on simplified meshes").
 inline constexpr SourceMesh kSelectionSourceMesh = SourceMesh::Simplified;
 
 // The lattice the selection's errors are read on unless asked

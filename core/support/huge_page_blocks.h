@@ -4,7 +4,7 @@
 // warped-layer cache's layers: a decimation fills gigabytes of them, and
 // with 4 KiB pages the kernel's page faults took a tenth of its CPU, more
 // on a fresh virtual machine, whose memory the hypervisor backs on first
-// touch (docs/BENCHMARKS.md, "the layers' memory in huge pages"). The C
+// touch (docs/history/BENCHMARKS-2026-11.md, "the layers' memory in huge pages"). The C
 // library cannot be told to do this from inside the program, and a layer
 // (a few hundred KiB) is too small for a huge page of its own, so blocks
 // of a size share mappings and a freed block is kept for the next one of

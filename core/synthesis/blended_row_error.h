@@ -7,7 +7,7 @@
 // order as those functions, so the same bits (tests/blended_row_error_test.cpp).
 // Every error the selection computes passes through here: the blend and
 // the comparison pixel by pixel were the largest part of a decimation
-// (docs/BENCHMARKS.md).
+// (docs/history/BENCHMARKS-2026-11.md).
 
 #include "core/synthesis/blend.h"
 #include "core/synthesis/reconstruction_error.h"

@@ -58,7 +58,7 @@ public:
     // Per pixel in float (display values in [0, 1]); rows sum in double.
     // std::abs clears the sign bit; glm::abs compares and branches, and the
     // differences' signs are random, so it mispredicted: a quarter of a
-    // cached-layer error's time (docs/BENCHMARKS.md). The same values.
+    // cached-layer error's time (docs/history/BENCHMARKS-2026-11.md). The same values.
     const glm::vec3 signedDifference = (hole ? glm::vec3(0.0f) : reconstruction) - truth;
     const glm::vec3 difference(std::abs(signedDifference.r), std::abs(signedDifference.g),
                                std::abs(signedDifference.b));

@@ -93,7 +93,7 @@ WarpSource::WarpSource(const Panorama& panorama, glm::vec3 position, float yawRa
   if (options.mesh == SourceMesh::Simplified && stored) {
     // A stored mesh names its orphans too: the grid's points and stretch
     // test, most of a reference's preparation in the viewer's loader
-    // (docs/BENCHMARKS.md, 2026-11-28), are not needed.
+    // (docs/history/BENCHMARKS-2026-11.md, 2026-11-28), are not needed.
     adoptSimplified(panorama, std::move(*stored));
     return;
   }
@@ -226,7 +226,7 @@ std::optional<std::vector<uint32_t>> WarpSource::sourceTriangles(const Simplifie
   TRIWALK_CHECK(mesh_ == SourceMesh::Simplified, "only a simplified mesh numbers its vertices apart from the grid");
   // Each grid vertex's number here, by table: a walking mesh has a few
   // hundred thousand indices, and a search per index took half as long as
-  // the grid's stretch test in the viewer's loader (docs/BENCHMARKS.md,
+  // the grid's stretch test in the viewer's loader (docs/history/BENCHMARKS-2026-11.md,
   // 2026-11-28).
   constexpr uint32_t kNotMine = std::numeric_limits<uint32_t>::max();
   std::vector<uint32_t> numberOf(size_t(width_) * size_t(height_) + 2, kNotMine);
@@ -590,7 +590,7 @@ PixelRange sphericalRange(const ProjectedVertex* v[3], bool atInfinity, const Di
 // decides every pixel and the layer is the one a scan of the whole range
 // gives. Worth its three arc cosines a row only for wide triangles: a
 // simplified mesh's walls and floors span tens of columns and cover a few
-// percent of their range (docs/BENCHMARKS.md).
+// percent of their range (docs/history/BENCHMARKS-2026-11.md).
 class RowSpans {
 public:
   RowSpans(const SphericalTriangle& triangle, const DirectionTable& directions, const PixelRange& range)

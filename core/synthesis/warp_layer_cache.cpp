@@ -184,7 +184,7 @@ size_t automaticLayerCacheBytes() {
   // Heap that earlier work in this process freed (another decimation, a
   // capture: bench, suite) is this process's to reuse, but the C library
   // keeps it, so the kernel does not count it available: handed back
-  // first, a later decimation got 14.1 GiB, not 11.1 (docs/BENCHMARKS.md).
+  // first, a later decimation got 14.1 GiB, not 11.1 (docs/history/BENCHMARKS-2026-11.md).
   returnFreePagesToKernel();
   const size_t physical = physicalMemoryBytes();
   const size_t available = availableMemoryBytes().value_or(physical / 2);

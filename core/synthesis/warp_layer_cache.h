@@ -129,7 +129,7 @@ std::optional<size_t> availableMemoryBytes();
 // A budget for the cache from the memory left once the views are loaded:
 // three quarters of what the kernel reports available, at most 60% of the
 // machine's memory, at least 1 GiB. A denser capture needs more layers
-// again later than a fixed third of the memory held (docs/BENCHMARKS.md,
+// again later than a fixed third of the memory held (docs/history/BENCHMARKS-2026-11.md,
 // "the warped-layer cache sized by the memory left"); a layer never needed
 // again costs memory only.
 size_t automaticLayerCacheBytes();

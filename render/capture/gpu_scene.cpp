@@ -19,7 +19,7 @@ namespace {
 // loop was the largest single part of the region search (15% of its CPU
 // on oacmpdm1). Draws of 32 triangles, all given in one call, bound it; a
 // full capture, bound by its fragments, takes as long either way
-// (docs/BENCHMARKS.md, "the region search's draws in runs of 32 triangles").
+// (docs/history/BENCHMARKS-2026-11.md, "the region search's draws in runs of 32 triangles").
 constexpr size_t kIndicesPerDraw = 96;
 static_assert(kIndicesPerDraw % 3 == 0, "whole triangles");
 

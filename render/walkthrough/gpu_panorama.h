@@ -21,7 +21,7 @@
 // the still frame's t does of its own. So a simplified reference also
 // keeps a walking mesh, its mesh simplified further to t / s_walk, which
 // frames at or below the scale s_walk draw instead; on llvmpipe a small
-// frame's time is the setup of its triangles (docs/BENCHMARKS.md).
+// frame's time is the setup of its triangles (docs/history/BENCHMARKS-2026-11.md).
 //
 // Preparing (decoding, the stretch test, simplifying or reading the
 // stored simplification, tiling) is CPU work that a loader thread does

@@ -398,3 +398,28 @@ TEST_CASE("help lists what a user needs, and --help-all the options that tune th
 }
 
 }  // namespace triwalk
+
+namespace triwalk {
+
+TEST_CASE("capture --scene builtin-floor:2x1 captures the floor's own region at three samples a metre") {
+  testing::TemporaryDirectory directory;
+  const RunResult run = runTriwalk(directory, "capture --quiet --scene builtin-floor:2x1 --width 16 --probes 4 --out " +
+                                                  (directory / "floor").string(),
+                                   true);
+  INFO(run.err);
+  REQUIRE(run.status == 0);
+  CHECK(run.out.find("samples 0.33 m apart over a 52.1 m2 region") != std::string::npos);
+  const Dataset floor = Dataset::open(directory / "floor");
+  CHECK(floor.manifest().scene == "builtin-floor:2x1");
+  CHECK(floor.sampleCount() == 480);
+  CHECK(floor.probeCount() == 4);
+  CHECK(floor.walkableRegion().area() == doctest::Approx(52.1).epsilon(0.01));
+  // A density given on the command line wins over the floor's own.
+  const RunResult sparse = runTriwalk(directory, "capture --quiet --scene builtin-floor:2x1 --width 16 --probes 0 --spacing 1 --out " +
+                                                     (directory / "sparse").string(),
+                                      true);
+  REQUIRE(sparse.status == 0);
+  CHECK(Dataset::open(directory / "sparse").sampleCount() < 80);
+}
+
+}  // namespace triwalk

@@ -24,7 +24,9 @@ void registerCaptureCommand(CLI::App& app) {
   };
   auto arguments = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand("capture", "Render the dense panorama samples and held-out probes of a scene");
-  command->add_option("--scene", arguments->scene, "builtin, a scene description (.json) or any file Assimp reads")
+  command->add_option("--scene", arguments->scene,
+                      "builtin, builtin-floor:CxR[:SEED] (a generated floor of C x R rooms with corridors, captured "
+                      "3 samples a metre apart), a scene description (.json) or any file Assimp reads")
       ->capture_default_str();
   command->add_option("--out", arguments->out, "Output data set directory")->required()->check(writableDirectory());
   command->add_option("--paths", arguments->options.paths, "Number of parallel capture paths")
@@ -66,7 +68,7 @@ void registerCaptureCommand(CLI::App& app) {
   command->add_flag("--quiet", arguments->options.quiet, "No progress output");
   addSceneImportOptions(*command, arguments->import);
 
-  command->callback([arguments] {
+  command->callback([arguments, command] {
     Arguments& a = *arguments;
     SceneCaptureRequest request;
     request.scene = a.scene;
@@ -78,6 +80,7 @@ void registerCaptureCommand(CLI::App& app) {
     if (a.eyeHeight > 0.0f) request.options.eyeHeight = a.eyeHeight;
     if (a.spacing > 0.0f) request.options.spacing = a.spacing;
     request.autoArea = a.autoArea;
+    request.densityGiven = command->count("--spacing") + command->count("--paths") + command->count("--per-path") > 0;
     request.gl = a.gl;
     request.out = a.out;
     captureScene(request);

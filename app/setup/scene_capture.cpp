@@ -11,7 +11,10 @@ CaptureSummary captureScene(const SceneCaptureRequest& request) {
   LoadedScene loaded = loadSceneForCapture(request.scene, request.import);
   auto context = createHeadlessContext(parseHeadlessBackend(request.gl));
   CaptureOptions options = request.options;
-  if (!options.area && !options.region && (request.autoArea || loaded.imported)) {
+  if (!options.area && !options.region && !request.autoArea && loaded.region) {
+    options.region = loaded.region;
+    if (!request.densityGiven && loaded.sampleSpacing) options.spacing = *loaded.sampleSpacing;
+  } else if (!options.area && !options.region && (request.autoArea || loaded.imported)) {
     RegionSearchOptions search;
     search.eyeHeight = options.eyeHeight.value_or(loaded.scene.walkableArea.eyeHeight);
     search.starts = request.starts;

@@ -17,6 +17,7 @@ struct SceneCaptureRequest {
   SceneImportArguments import;
   CaptureOptions options;  // options.region: given by --region
   bool autoArea = false;  // also for the built-in and JSON scenes, which state their own
+  bool densityGiven = false;  // --spacing, --paths or --per-path: a generated floor keeps its own spacing otherwise
   std::vector<glm::vec2> starts;  // seeds of the automatic region (--start)
   std::string gl = "auto";
   std::string out;

@@ -2,6 +2,8 @@
 
 #include "app/setup/option_checks.h"
 #include "core/support/errors.h"
+#include "core/io/json_fields.h"
+#include "render/scene/floor_plan.h"
 #include "render/scene/scene_description.h"
 
 #include <cstdio>
@@ -20,16 +22,20 @@ void addSceneImportOptions(CLI::App& command, SceneImportArguments& arguments) {
 }
 
 LoadedScene loadSceneForCapture(const std::string& spec, const SceneImportArguments& arguments) {
-  if (spec == "builtin") return {"builtin", loadSceneDescription(builtinScenePath()), false};
+  if (spec == "builtin") return {"builtin", loadSceneDescription(builtinScenePath()), false, std::nullopt, std::nullopt};
+  if (const std::optional<FloorPlanSize> size = parseFloorPlanSpec(spec)) {
+    FloorPlan plan = makeFloorPlan(*size, readJsonFile(builtinScenePath()));
+    return {spec, sceneFromDescription(plan.description, spec), false, std::move(plan.region), plan.sampleSpacing};
+  }
   const std::filesystem::path path(spec);
   if (!std::filesystem::exists(path)) throw InputError(spec, "scene file does not exist");
-  if (path.extension() == ".json") return {path.stem().string(), loadSceneDescription(path), false};
+  if (path.extension() == ".json") return {path.stem().string(), loadSceneDescription(path), false, std::nullopt, std::nullopt};
   SceneImportOptions options;
   options.unitScale = arguments.unitScale;
   options.upAxis = arguments.upAxis;
   options.map = arguments.map;
   SceneImportReport report;
-  LoadedScene loaded{"", importScene(path, options, report), true};
+  LoadedScene loaded{"", importScene(path, options, report), true, std::nullopt, std::nullopt};
   loaded.name = loaded.scene.name;
   std::printf("imported %s: %zu triangles, %zu materials, %d textures", spec.c_str(), loaded.scene.triangleCount(),
               loaded.scene.materials.size(), report.texturesLoaded);

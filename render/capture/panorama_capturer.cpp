@@ -134,16 +134,27 @@ void PanoramaCapturer::renderCubeFaces(glm::vec3 position, GpuScene::Outputs out
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
 
-  // Distances only (the region search's probes) need no lights.
-  const int lightCount =
-      outputs == GpuScene::Outputs::ColorAndDistance ? std::min<int>(kMaxLights, int(scene_.lights.size())) : 0;
+  // Distances only (the region search's probes) need no lights. A scene
+  // with more lights than the shader takes (a floor of rooms, each with
+  // its own) is lit by the nearest, in the scene's order among equals.
+  std::vector<size_t> lights;
+  if (outputs == GpuScene::Outputs::ColorAndDistance) {
+    for (size_t i = 0; i < scene_.lights.size(); ++i) lights.push_back(i);
+    if (lights.size() > size_t(kMaxLights)) {
+      std::stable_sort(lights.begin(), lights.end(), [&](size_t a, size_t b) {
+        return glm::length(scene_.lights[a].position - position) < glm::length(scene_.lights[b].position - position);
+      });
+      lights.resize(size_t(kMaxLights));
+    }
+  }
   std::vector<glm::vec3> lightPositions, lightColors;
   std::vector<float> lightRanges;
-  for (int i = 0; i < lightCount; ++i) {
-    lightPositions.push_back(scene_.lights[size_t(i)].position - position);
-    lightColors.push_back(scene_.lights[size_t(i)].color);
-    lightRanges.push_back(scene_.lights[size_t(i)].range);
+  for (size_t i : lights) {
+    lightPositions.push_back(scene_.lights[i].position - position);
+    lightColors.push_back(scene_.lights[i].color);
+    lightRanges.push_back(scene_.lights[i].range);
   }
+  const int lightCount = int(lights.size());
 
   gpuScene_.selectCubeFaceTriangles(position);
   for (int face = 0; face < 6; ++face) {

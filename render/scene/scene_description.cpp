@@ -227,8 +227,11 @@ private:
 }  // namespace
 
 Scene loadSceneDescription(const std::filesystem::path& path) {
-  const nlohmann::json document = readJsonFile(path);
-  return SceneDescriptionReader(document, path.string()).read();
+  return sceneFromDescription(readJsonFile(path), path.string());
+}
+
+Scene sceneFromDescription(const nlohmann::json& description, const std::string& subject) {
+  return SceneDescriptionReader(description, subject).read();
 }
 
 std::filesystem::path assetDirectory() {

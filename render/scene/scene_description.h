@@ -7,12 +7,18 @@
 
 #include "render/scene/scene.h"
 
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
+#include <string>
 
 namespace triwalk {
 
 // Builds the scene; throws InputError naming the file on any bad field.
 Scene loadSceneDescription(const std::filesystem::path& path);
+// The same from a description in memory (a generated floor plan); subject
+// names it in errors.
+Scene sceneFromDescription(const nlohmann::json& description, const std::string& subject);
 
 // Where the built-in assets live: $TRIWALK_ASSETS, else the source tree's
 // assets/ directory recorded at build time.

@@ -240,7 +240,8 @@ TEST_CASE("an irregular data set without paths decimates, evaluates against ever
     CHECK(row["probe_errors"].size() == 6);
     CHECK(row["samples"].get<int>() >= 3);
   }
-  CHECK(methods == std::vector<std::string>{"initial", "uniform", "edge_collapse", "kmedoids", "random"});
+  CHECK(methods == std::vector<std::string>{"initial", "uniform", "edge_collapse", "kmedoids", "geodesic_kmedoids",
+                                            "farthest_point", "random"});
   // Every sample is a vertex of the dense triangulation; what edge collapse
   // leaves outside its triangles, decimate said too (or said nothing).
   CHECK(document["rows"][0]["samples_outside"].get<int>() == 0);

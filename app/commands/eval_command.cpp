@@ -10,6 +10,7 @@
 #include "core/selection/baselines.h"
 #include "core/selection/evaluation.h"
 #include "core/selection/selection.h"
+#include "core/selection/walking_distances.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 
@@ -27,6 +28,8 @@ const char* label(const std::string& method) {
   if (method == "uniform") return "uniform (b)";
   if (method == "edge_collapse") return "edge collapse (c)";
   if (method == "kmedoids") return "k-medoids";
+  if (method == "geodesic_kmedoids") return "k-medoids, walking";
+  if (method == "farthest_point") return "farthest point, walking";
   if (method == "random") return "random";
   return method.c_str();
 }
@@ -165,6 +168,9 @@ void registerEvalCommand(CLI::App& app) {
     addBaseline("uniform", [&] { return uniformSelection(dataset, count); });
     rows.push_back({"edge_collapse", selectionMesh(selection, dataset)});
     addBaseline("kmedoids", [&] { return kMedoidsSelection(positions, count); });
+    const WalkingDistances walking(positions, dataset.walkableRegion());
+    addBaseline("geodesic_kmedoids", [&] { return geodesicKMedoidsSelection(walking, count); });
+    addBaseline("farthest_point", [&] { return farthestPointSelection(walking, count); });
     addBaseline("random", [&] { return randomSelection(dataset.sampleCount(), count, a.seed); });
 
     std::vector<MethodEvaluation> evaluations;
@@ -202,7 +208,7 @@ void registerEvalCommand(CLI::App& app) {
     for (const MethodEvaluation& baseline : evaluations) {
       if (baseline.method == "initial" || baseline.method == "edge_collapse") continue;
       const PairedComparison paired = compareProbeErrors(collapse->probeErrors, baseline.probeErrors);
-      std::printf("  %-12s %.4f  edge collapse %+.1f%% +- %.1f%%, lower at %d of %zu probes\n", label(baseline.method),
+      std::printf("  %-24s %.4f  edge collapse %+.1f%% +- %.1f%%, lower at %d of %zu probes\n", label(baseline.method),
                   baseline.probeMeanError, 100.0 * paired.meanDifference / baseline.probeMeanError,
                   100.0 * paired.standardError / baseline.probeMeanError, paired.candidateLower,
                   collapse->probeErrors.size());

@@ -8,6 +8,8 @@
 //   k-medoids: position-only clustering, as MPEG's immersive-video test
 //             model picks basic views,
 //   random:   a seeded random subset.
+// walking_distances.h adds k-medoids and farthest-point sampling by
+// walking distance inside the walkable region.
 // Each returns sorted sample indices; triangulate them with
 // ViewMesh::delaunay.
 

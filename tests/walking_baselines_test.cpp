@@ -1,0 +1,98 @@
+// Baselines that know the walls (core/selection/walking_distances.h), on
+// a hairpin corridor whose answers are known: two straight corridors 1 m
+// wide, 10 m long, side by side behind a 0.2 m wall and joined at their
+// east end. By straight line the corridors are 1.2 m apart; by walking,
+// their west ends are 20 m apart.
+
+#include "core/selection/baselines.h"
+#include "core/selection/walking_distances.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace triwalk;
+
+namespace {
+
+WalkableRegion hairpin() {
+  RegionPolygon polygon;
+  polygon.outer = {{0, 0}, {10, 0}, {10, 2.2}, {0, 2.2}, {0, 1.2}, {9, 1.2}, {9, 1.0}, {0, 1.0}};
+  return WalkableRegion({polygon}, "hairpin");
+}
+
+// Samples 0.25 m apart inside the region.
+std::vector<glm::dvec2> latticeIn(const WalkableRegion& region) {
+  std::vector<glm::dvec2> positions;
+  for (double y = 0.125; y < 2.2; y += 0.25) {
+    for (double x = 0.125; x < 10.0; x += 0.25) {
+      if (region.contains({x, y})) positions.push_back({x, y});
+    }
+  }
+  return positions;
+}
+
+bool inSouthCorridor(glm::dvec2 p) { return p.y < 1.0 && p.x < 9.0; }
+bool inNorthCorridor(glm::dvec2 p) { return p.y > 1.2 && p.x < 9.0; }
+
+}  // namespace
+
+TEST_CASE("walking distances go round the wall, straight ones go through it") {
+  const WalkableRegion region = hairpin();
+  const std::vector<glm::dvec2> positions = latticeIn(region);
+  const WalkingDistances walking(positions, region);
+  // The two west ends, one above the other across the wall.
+  int south = -1, north = -1;
+  for (int i = 0; i < int(positions.size()); ++i) {
+    if (positions[size_t(i)] == glm::dvec2(0.125, 0.625)) south = i;
+    if (positions[size_t(i)] == glm::dvec2(0.125, 1.625)) north = i;
+  }
+  REQUIRE(south >= 0);
+  REQUIRE(north >= 0);
+  CHECK(glm::length(positions[size_t(south)] - positions[size_t(north)]) == doctest::Approx(1.0));
+  // Round the wall's end at x = 9: at least 2 x 8.875 m, and not much more on this lattice.
+  CHECK(walking(south, north) > 2.0 * 8.875);
+  CHECK(walking(south, north) < 2.0 * 8.875 * 1.08);
+  CHECK(walking(south, north) == walking(north, south));
+  CHECK(walking(south, south) == 0.0f);
+}
+
+TEST_CASE("k-medoids by walking puts one of 2 medoids in each corridor of the hairpin, by straight line it does not") {
+  const WalkableRegion region = hairpin();
+  const std::vector<glm::dvec2> positions = latticeIn(region);
+  const WalkingDistances walking(positions, region);
+  const std::vector<int> byWalking = geodesicKMedoidsSelection(walking, 2);
+  REQUIRE(byWalking.size() == 2);
+  const glm::dvec2 a = positions[size_t(byWalking[0])], b = positions[size_t(byWalking[1])];
+  CHECK(((inSouthCorridor(a) && inNorthCorridor(b)) || (inNorthCorridor(a) && inSouthCorridor(b))));
+  // By straight line the corridors are one strip: the two medoids split it
+  // west and east, each serving both corridors through the wall.
+  const std::vector<int> straight = kMedoidsSelection(positions, 2);
+  const glm::dvec2 c = positions[size_t(straight[0])], d = positions[size_t(straight[1])];
+  CHECK_FALSE(((inSouthCorridor(c) && inNorthCorridor(d)) || (inNorthCorridor(c) && inSouthCorridor(d))));
+}
+
+TEST_CASE("farthest-point sampling by walking: each pick is the farthest left, so the distances never grow") {
+  const WalkableRegion region = hairpin();
+  const std::vector<glm::dvec2> positions = latticeIn(region);
+  const WalkingDistances walking(positions, region);
+  const auto picks = farthestPointOrder(walking, 12);
+  REQUIRE(picks.size() == 12);
+  CHECK(picks[0].first == walking.mostCentral());
+  // The most central sample of a hairpin is near its turn.
+  CHECK(positions[size_t(picks[0].first)].x > 8.0);
+  for (size_t k = 1; k < picks.size(); ++k) {
+    // Its distance to the nearest earlier pick is the largest any sample had then...
+    for (int i = 0; i < walking.count(); ++i) {
+      float nearest = std::numeric_limits<float>::infinity();
+      for (size_t j = 0; j < k; ++j) nearest = std::min(nearest, walking(picks[j].first, i));
+      CHECK(nearest <= picks[k].second);
+    }
+    // ...and no later pick is farther from the picks before it than this one was.
+    CHECK(picks[k].second <= picks[k - 1].second);
+  }
+  // The second pick is a west end of the hairpin, a corridor's length away by walking.
+  CHECK(positions[size_t(picks[1].first)].x < 0.5);
+  CHECK(picks[1].second > 8.5f);
+}

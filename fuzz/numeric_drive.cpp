@@ -6,6 +6,7 @@
 #include "core/selection/evaluation.h"
 #include "core/selection/reference_selection.h"
 #include "core/selection/selection.h"
+#include "core/selection/walking_distances.h"
 #include "core/support/errors.h"
 #include "core/synthesis/blend.h"
 #include "core/synthesis/reconstruction_error.h"
@@ -164,8 +165,10 @@ bool driveNumbers(const uint8_t* data, size_t size, const std::filesystem::path&
     const MethodEvaluation collapse = evaluateMesh("edge_collapse", selectionMesh(selected, dataset), evaluationErrors);
     requireFinite(collapse.meanError, "edge collapse's mean error");
     requireFinite(collapse.probeMeanError, "edge collapse's probe mean error");
-    for (const std::vector<int>& baseline : {uniformSelection(dataset, count), kMedoidsSelection(positions, count),
-                                             randomSelection(dataset.sampleCount(), count, 1)}) {
+    const WalkingDistances walking(positions, dataset.walkableRegion());
+    for (const std::vector<int>& baseline :
+         {uniformSelection(dataset, count), kMedoidsSelection(positions, count), geodesicKMedoidsSelection(walking, count),
+          farthestPointSelection(walking, count), randomSelection(dataset.sampleCount(), count, 1)}) {
       try {
         const MethodEvaluation row = evaluateMesh("baseline", datasetMesh(dataset, baseline, "baseline"), evaluationErrors);
         requireFinite(row.probeMeanError, "a baseline's probe mean error");

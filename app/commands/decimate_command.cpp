@@ -29,12 +29,15 @@ void registerDecimateCommand(CLI::App& app) {
   command->add_option("--dataset", arguments->dataset, "Data set directory")->required();
   command->add_option("--out", arguments->out, "Selection file to write (selection.json)")->required()->check(writableFile());
   CLI::Option* maxError = command->add_option(
-      "--max-error", arguments->maxError, "Stop before a collapse whose error exceeds this absolute value (the paper's 1.85)")
+      "--max-error", arguments->maxError,
+      "Stop before a collapse whose error exceeds this absolute value (the paper's 1.85; up to 1e9, above any error, "
+      "which the selection file can hold)")
       ->check(within(kMaxErrorRange));
-  char relativeHelp[256];
+  char relativeHelp[400];
   std::snprintf(relativeHelp, sizeof relativeHelp,
                 "Stop before a collapse whose error exceeds this many times the dense triangulation's mean triangle error "
-                "(default %.2f, the paper's ratio, unless --max-error or --target is given)",
+                "(default %.2f, the paper's ratio, unless --max-error or --target is given; up to 1e6, so that the "
+                "threshold stays finite)",
                 kDefaultRelativeError);
   command->add_option("--relative-error", arguments->relativeError, relativeHelp)
       ->check(within(kRelativeErrorRange))->excludes(maxError);

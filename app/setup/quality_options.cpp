@@ -70,11 +70,13 @@ void addQualityOptions(CLI::App& command, QualityArguments& arguments, HoleMode 
   addHoleOption(command, arguments, holes,
                 "Holes after the blend: fill (the error sees the filled view, as a walker does), or mark / black "
                 "(the raw warp: holes count as black and as bad pixels, the paper's)");
-  command.add_option("--alpha", arguments.alpha, "Weight of R in E = alpha R + beta B (0 to 1e6)")
+  command.add_option("--alpha", arguments.alpha,
+                     "Weight of R in E = alpha R + beta B (0 to 1e6: beyond, a weight only rescales E, and the bound "
+                     "keeps every sum of errors finite)")
       ->capture_default_str()->check(within(kErrorWeightRange))->group("Error");
-  command.add_option("--beta", arguments.beta, "Weight of B (percent of bad pixels; 0 to 1e6)")
+  command.add_option("--beta", arguments.beta, "Weight of B (percent of bad pixels; 0 to 1e6, as --alpha)")
       ->capture_default_str()->check(within(kErrorWeightRange))->group("Error");
-  command.add_option("--delta", arguments.delta, "Bad-pixel tolerance on the 0..255 scale")
+  command.add_option("--delta", arguments.delta, "Bad-pixel tolerance on the 0..255 scale (past 255 no pixel is bad)")
       ->capture_default_str()->check(within(kBadPixelToleranceRange))->group("Error");
   command.add_option("--pixel-weighting", arguments.pixelWeighting, "solid-angle (panoramas) or uniform (the paper's)")
       ->capture_default_str()->check(CLI::IsMember({"solid-angle", "uniform"}))->group("Error");

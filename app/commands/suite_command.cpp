@@ -23,6 +23,7 @@
 #include "core/io/atomic_file.h"
 #include "core/io/json_fields.h"
 #include "core/selection/baselines.h"
+#include "core/selection/walking_distances.h"
 #include "core/selection/evaluation.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
@@ -30,6 +31,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -113,7 +115,10 @@ struct SuiteRow {
   int reachedCount = 0;  // edge collapse's references, which every other method gets too
   int uniformCount = 0;
   double dense = 0.0, uniform = 0.0, kmedoids = 0.0, random = 0.0, edgeCollapse = 0.0;
-  Comparison versusUniform, versusKMedoids;
+  // By walking distance (walking_distances.h); NaN where it could not be
+  // triangulated at the count.
+  double walkingKMedoids = 0.0, farthestPoint = 0.0;
+  Comparison versusUniform, versusKMedoids, versusWalkingKMedoids, versusFarthestPoint;
   double gapClosed = 0.0;  // (uniform - edge collapse) / (uniform - dense)
   double selectionSeconds = 0.0;
 };
@@ -124,19 +129,32 @@ std::string formatPercent(const Comparison& comparison) {
   return text;
 }
 
+std::string formatMean(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4f", value);
+  return std::isnan(value) ? "-" : text;
+}
+
+std::string formatVersus(double baseline, const Comparison& comparison) {
+  return std::isnan(baseline) ? "-" : formatPercent(comparison);
+}
+
 std::string tableOf(const std::vector<SuiteRow>& rows, const std::vector<double>& fractions) {
   std::ostringstream out;
-  char line[512];
-  out << "| scene | samples | dense | uniform | k-medoids | random | edge collapse | vs uniform | vs k-medoids | gap closed |\n"
-         "|---|---|---|---|---|---|---|---|---|---|\n";
+  char line[768];
+  out << "| scene | samples | dense | uniform | k-medoids | k-medoids, walking | farthest point, walking | random | "
+         "edge collapse | vs uniform | vs k-medoids | vs k-medoids, walking | vs farthest point, walking | gap closed |\n"
+         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const SuiteRow& r : rows) {
     const std::string samples = r.reachedCount == r.count
                                     ? std::to_string(r.count)
                                     : std::to_string(r.reachedCount) + " (target " + std::to_string(r.count) + ")";
-    std::snprintf(line, sizeof line, "| %s | %s | %.4f | %.4f (%d) | %.4f | %.4f | %.4f | %s | %s | %.0f%% |\n",
-                  r.scene.c_str(), samples.c_str(), r.dense, r.uniform, r.uniformCount, r.kmedoids, r.random,
-                  r.edgeCollapse, formatPercent(r.versusUniform).c_str(), formatPercent(r.versusKMedoids).c_str(),
-                  100.0 * r.gapClosed);
+    std::snprintf(line, sizeof line, "| %s | %s | %.4f | %.4f (%d) | %.4f | %s | %s | %.4f | %.4f | %s | %s | %s | %s | %.0f%% |\n",
+                  r.scene.c_str(), samples.c_str(), r.dense, r.uniform, r.uniformCount, r.kmedoids,
+                  formatMean(r.walkingKMedoids).c_str(), formatMean(r.farthestPoint).c_str(), r.random, r.edgeCollapse,
+                  formatPercent(r.versusUniform).c_str(), formatPercent(r.versusKMedoids).c_str(),
+                  formatVersus(r.walkingKMedoids, r.versusWalkingKMedoids).c_str(),
+                  formatVersus(r.farthestPoint, r.versusFarthestPoint).c_str(), 100.0 * r.gapClosed);
     out << line;
   }
   out << "\nMeans over scenes (the relative differences and the gap closed averaged; wins = rows where edge collapse "
@@ -301,6 +319,7 @@ void registerSuiteCommand(CLI::App& app) {
 
       DatasetTriangleErrors errors(dataset, settings, LoadedViews::SamplesAndProbes, a.quiet);
       const std::vector<glm::dvec2> positions = samplePositions(dataset);
+      const WalkingDistances walking(positions, dataset.walkableRegion());
       const std::vector<double> dense = probeErrors(datasetMesh(dataset, {}, dataset.manifestPath().string()), errors);
       for (size_t f = 0; f < spec.fractions.size(); ++f) {
         throwIfInterrupted();
@@ -327,6 +346,21 @@ void registerSuiteCommand(CLI::App& app) {
             probeErrors(datasetMesh(dataset, kMedoidsSelection(positions, reached), "k-medoids baseline"), errors);
         const std::vector<double> random = probeErrors(
             datasetMesh(dataset, randomSelection(dataset.sampleCount(), reached, 1), "random baseline"), errors);
+        // The walking baselines are named "-" where they cannot be triangulated, as eval does.
+        auto walkingBaseline = [&](const std::function<std::vector<int>()>& select) {
+          try {
+            return probeErrors(datasetMesh(dataset, select(), "walking baseline"), errors);
+          } catch (const InputError&) {
+            return std::vector<double>();
+          }
+        };
+        const std::vector<double> walkingKMedoids =
+            walkingBaseline([&] { return geodesicKMedoidsSelection(walking, reached); });
+        const std::vector<double> farthestPoint = walkingBaseline([&] { return farthestPointSelection(walking, reached); });
+        row.walkingKMedoids = walkingKMedoids.empty() ? std::nan("") : mean(walkingKMedoids);
+        row.farthestPoint = farthestPoint.empty() ? std::nan("") : mean(farthestPoint);
+        if (!walkingKMedoids.empty()) row.versusWalkingKMedoids = compare(edgeCollapse, walkingKMedoids);
+        if (!farthestPoint.empty()) row.versusFarthestPoint = compare(edgeCollapse, farthestPoint);
         row.dense = mean(dense);
         row.uniform = mean(uniformErrors);
         row.kmedoids = mean(kmedoids);
@@ -353,6 +387,8 @@ void registerSuiteCommand(CLI::App& app) {
                              {"uniform", uniformErrors},
                              {"edge_collapse", edgeCollapse},
                              {"kmedoids", kmedoids},
+                             {"geodesic_kmedoids", walkingKMedoids},
+                             {"farthest_point", farthestPoint},
                              {"random", random}}}});
         rows.push_back(row);
         progress.advance();

@@ -164,16 +164,19 @@ std::vector<int> kMedoidsSelection(std::span<const glm::dvec2> positions, int co
     medoids.push_back(farthest);
   }
 
+  return refineMedoids(n, std::move(medoids),
+                       [&](int a, int b) { return glm::length(positions[size_t(a)] - positions[size_t(b)]); });
+}
+
+std::vector<int> refineMedoids(int n, std::vector<int> medoids, const std::function<double(int, int)>& distance) {
+  const int count = int(medoids.size());
   std::vector<int> assignment(size_t(n), -1);
   for (int iteration = 0; iteration < 100; ++iteration) {
     bool changed = false;
     for (int i = 0; i < n; ++i) {
       int best = 0;
       for (int k = 1; k < count; ++k) {
-        if (glm::length(positions[size_t(i)] - positions[size_t(medoids[size_t(k)])]) <
-            glm::length(positions[size_t(i)] - positions[size_t(medoids[size_t(best)])])) {
-          best = k;
-        }
+        if (distance(i, medoids[size_t(k)]) < distance(i, medoids[size_t(best)])) best = k;
       }
       changed |= assignment[size_t(i)] != best;
       assignment[size_t(i)] = best;
@@ -185,7 +188,7 @@ std::vector<int> kMedoidsSelection(std::span<const glm::dvec2> positions, int co
         if (assignment[size_t(candidate)] != k) continue;
         double sum = 0.0;
         for (int member = 0; member < n; ++member) {
-          if (assignment[size_t(member)] == k) sum += glm::length(positions[size_t(member)] - positions[size_t(candidate)]);
+          if (assignment[size_t(member)] == k) sum += distance(member, candidate);
         }
         if (sum < bestSum) bestSum = sum, bestMember = candidate;
       }

@@ -17,6 +17,7 @@
 
 #include <glm/glm.hpp>
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -41,6 +42,12 @@ std::vector<int> latticeSelection(std::span<const glm::dvec2> positions, int cou
 // (assign to nearest medoid, move each medoid to its cluster's best
 // member) until nothing changes.
 std::vector<int> kMedoidsSelection(std::span<const glm::dvec2> positions, int count);
+
+// The Voronoi iteration of k-medoids from starting medoids among n
+// samples, by any distance (straight or walking): assign each sample to
+// its nearest medoid, move each medoid to its cluster's member of least
+// summed distance, until nothing changes (at most 100 rounds). Sorted.
+std::vector<int> refineMedoids(int n, std::vector<int> medoids, const std::function<double(int, int)>& distance);
 
 std::vector<int> randomSelection(int sampleCount, int count, unsigned seed);
 

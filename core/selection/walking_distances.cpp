@@ -1,5 +1,6 @@
 #include "core/selection/walking_distances.h"
 
+#include "core/selection/baselines.h"
 #include "core/support/errors.h"
 
 #include <tbb/parallel_for.h>
@@ -126,35 +127,7 @@ std::vector<int> geodesicKMedoidsSelection(const WalkingDistances& distances, in
     const float d = distances(a, b);
     return d < kUnreachable ? double(d) : 1e12;
   };
-  std::vector<int> assignment(size_t(n), -1);
-  for (int iteration = 0; iteration < 100; ++iteration) {
-    bool changed = false;
-    for (int i = 0; i < n; ++i) {
-      int best = 0;
-      for (int k = 1; k < count; ++k) {
-        if (cost(i, medoids[size_t(k)]) < cost(i, medoids[size_t(best)])) best = k;
-      }
-      changed |= assignment[size_t(i)] != best;
-      assignment[size_t(i)] = best;
-    }
-    for (int k = 0; k < count; ++k) {
-      int bestMember = medoids[size_t(k)];
-      double bestSum = std::numeric_limits<double>::max();
-      for (int candidate = 0; candidate < n; ++candidate) {
-        if (assignment[size_t(candidate)] != k) continue;
-        double sum = 0.0;
-        for (int member = 0; member < n; ++member) {
-          if (assignment[size_t(member)] == k) sum += cost(member, candidate);
-        }
-        if (sum < bestSum) bestSum = sum, bestMember = candidate;
-      }
-      changed |= bestMember != medoids[size_t(k)];
-      medoids[size_t(k)] = bestMember;
-    }
-    if (!changed) break;
-  }
-  std::sort(medoids.begin(), medoids.end());
-  return medoids;
+  return refineMedoids(n, std::move(medoids), cost);
 }
 
 }  // namespace triwalk

@@ -424,3 +424,26 @@ TEST_CASE("capture --scene builtin-floor:2x1 captures the floor's own region at 
 }
 
 }  // namespace triwalk
+
+namespace triwalk {
+
+TEST_CASE("render warns in one line when its frames stand outside the walkable region, and synth refuses an --out it would not use") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 3, 3, 64, 1);
+  const std::string data = " --dataset " + (directory / "data").string();
+  const RunResult outside =
+      runTriwalk(directory, "render" + data + " --frames 2 --size 64x48 --at 50,2.5 --out " + (directory / "far").string(), true);
+  INFO(outside.err);
+  CHECK(outside.status == 0);
+  CHECK(outside.err.find("triwalk: warning: 2 of 2 frames stand outside the walkable region of ") != std::string::npos);
+  const RunResult inside = runTriwalk(directory, "render" + data + " --frames 2 --size 64x48 --out " + (directory / "near").string(), true);
+  CHECK(inside.status == 0);
+  CHECK(inside.err.find("warning") == std::string::npos);
+
+  const RunResult synth = runTriwalk(directory, "synth" + data + " --all-probes --out " + (directory / "images").string());
+  CHECK(synth.status != 0);
+  CHECK(synth.err.find("--out excludes --all-probes") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(directory / "images"));
+}
+
+}  // namespace triwalk

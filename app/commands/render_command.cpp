@@ -17,6 +17,7 @@
 #include "render/gl/gl_context.h"
 #include "render/walkthrough/walkthrough_renderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -129,6 +130,18 @@ void registerRenderCommand(CLI::App& app) {
       poses = readCameraPath(a.path);
     }
 
+    // No reference saw from outside the walkable region: frames there are
+    // black or filled. Said before the work, in one line.
+    const WalkableRegion region = dataset.walkableRegion();
+    const size_t outside = size_t(std::count_if(poses.begin(), poses.end(), [&](const CameraPose& pose) {
+      return !region.contains(glm::dvec2(pose.position));
+    }));
+    if (outside > 0) {
+      std::fprintf(stderr,
+                   "triwalk: warning: %zu of %zu frames stand outside the walkable region of %s, where no reference "
+                   "saw from\n",
+                   outside, poses.size(), a.dataset.c_str());
+    }
     auto context = createHeadlessContext(parseHeadlessBackend(a.gl));
     PanoramaCache cache(dataset, synthesis.warp, a.cacheMegabytes << 20);
     WalkthroughRenderer renderer(std::move(mesh), cache, width, height);

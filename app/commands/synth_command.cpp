@@ -114,11 +114,14 @@ void registerSynthCommand(CLI::App& app) {
   command->add_option("--at", arguments->at, "Destination position x,y,z in metres; default: the --truth view's")
       ->delimiter(',')->expected(3)->check(coordinate());
   command->add_option("--truth", arguments->truth, "Ground truth view (sample id or pN); default: a view at --at");
-  command->add_option("--out", arguments->out, "Directory for reconstruction, truth and heatmap PNGs")->check(writableDirectory());
+  CLI::Option* out = command->add_option("--out", arguments->out, "Directory for reconstruction, truth and heatmap PNGs")
+                         ->check(writableDirectory());
   command->add_option("--width", arguments->width, "Work at this panorama width (divides the data set's); 0 = full")
       ->capture_default_str();
+  // The table writes no images, so an --out beside it would be ignored in silence.
   command->add_flag("--all-probes", arguments->allProbes,
-                    "For every probe: E from the 1 and the 3 nearest samples, as a table");
+                    "For every probe: E from the 1 and the 3 nearest samples, as a table (no images)")
+      ->excludes(out);
   addQualityOptions(*command, arguments->quality, HoleMode::Fill);
 
   command->callback([arguments] {

@@ -2,6 +2,7 @@
 #include "app/setup/option_checks.h"
 #include "app/setup/view_ids.h"
 #include "core/io/dataset.h"
+#include "core/image/image_annotation.h"
 #include "core/io/atomic_file.h"
 #include "core/io/png_io.h"
 #include "core/io/staged_directory.h"
@@ -68,7 +69,8 @@ void registerExportPngCommand(CLI::App& app) {
       staging.writeFile(stem + "_color.png",
                         [&](const std::filesystem::path& path) { writePng(path, toDisplayImage(panorama.color)); });
       staging.writeFile(stem + "_distance.png", [&](const std::filesystem::path& path) {
-        writePng(path, distanceFalseColorImage(panorama.distance, arguments->maxDistance));
+        writePng(path, withColourBar(distanceFalseColorImage(panorama.distance, arguments->maxDistance),
+                                     arguments->maxDistance, "distance in metres, log scale from 0.1 m; black: sky"));
       });
       written.push_back(stem);
     }

@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   triwalk::registerRegionCommand(app);
   triwalk::registerSynthCommand(app);
   triwalk::registerDecimateCommand(app);
+  triwalk::registerTilesCommand(app);
   triwalk::registerEvalCommand(app);
   triwalk::registerRenderCommand(app);
   triwalk::registerSuiteCommand(app);

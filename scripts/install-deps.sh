@@ -13,6 +13,7 @@ packages=(
   libglm-dev libglfw3-dev libegl-dev libgl-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
   libimgui-dev libstb-dev libpng-dev libopenexr-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libassimp-dev libmeshoptimizer-dev libminizip-dev libxxhash-dev libtbb-dev libcli11-dev nlohmann-json3-dev doctest-dev
+  libopenmpi-dev openmpi-bin
   xvfb xauth
 )
 if [[ "$profile" == "test" ]]; then

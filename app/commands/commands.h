@@ -17,5 +17,6 @@ void registerViewCommand(CLI::App& app);
 void registerSuiteCommand(CLI::App& app);
 void registerImportCommand(CLI::App& app);
 void registerExportCommand(CLI::App& app);
+void registerTilesCommand(CLI::App& app);
 
 }  // namespace triwalk

@@ -3,10 +3,13 @@
 
 #include "app/commands/commands.h"
 #include "app/setup/decimation_options.h"
+#include "app/setup/mpi_world.h"
 #include "app/setup/option_checks.h"
+#include "app/setup/tile_jobs.h"
 #include "app/setup/walkthrough_setup.h"
 #include "core/selection/reference_selection.h"
 #include "core/selection/selection.h"
+#include "core/selection/tiled_selection.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 
@@ -14,13 +17,58 @@
 #include <cstdio>
 
 namespace triwalk {
+namespace {
+
+std::string tilesHelp() {
+  return "Decimate in tiles of about " + std::to_string(kTileCoreSamples) +
+         " samples each, stitched (docs/DESIGN.md, \"Tiled selection\"): a number of tiles, off, or auto (tiles "
+         "above " + std::to_string(2 * kTileCoreSamples) + " samples, where one decimation costs more than its tiles)";
+}
+
+CLI::Validator tileCountCheck() {
+  return CLI::Validator(
+      [](std::string& value) -> std::string {
+        if (value == "auto" || value == "off") return {};
+        const std::optional<int> count = parseTileCount(value);
+        return count ? std::string() : "must be auto, off or a number of tiles from 1 to 100000, got '" + value + "'";
+      },
+      "auto|off|N");
+}
+
+// The tiled decimation: its work folder beside the selection file, kept
+// until the selection is written, so a stopped run goes on from its tiles.
+void decimateTiled(const Dataset& dataset, const ResolvedSelection& resolved, int tiles, int jobs,
+                   const std::string& out, bool quiet) {
+  const bool worker = rankFromEnvironment() != 0;  // an MPI rank other than 0 only runs tiles
+  if (!worker) std::printf("%s; in %d tiles\n", describeErrorSettings(resolved.errors).c_str(), tiles);
+  InterruptScope interruptScope;
+  const std::filesystem::path folder = std::filesystem::path(out).concat(".tiles");
+  TilePlanRequest request{describeSelectionSettings(resolved.selection, resolved.errors), tiles, jobs};
+  std::optional<StitchResult> stitched = decimateInTiles(dataset, request, folder, quiet || worker);
+  if (!stitched) return;
+  stitched->selection.settings["tiles"] = tiles;
+  writeSelection(out, stitched->selection, dataset);
+  std::filesystem::remove_all(folder);
+  std::printf("kept %zu of %d samples, %zu triangles: the tiles' cores kept %zu, the seam pass made %zu collapses "
+              "and %zu moves\n",
+              stitched->selection.samples.size(), dataset.sampleCount(), stitched->selection.triangles.size(),
+              stitched->unionSamples, stitched->seamCollapses, stitched->seamMoves);
+  if (const std::string outside = describeSamplesOutsideTriangles(dataset, selectionMesh(stitched->selection, dataset));
+      !outside.empty()) {
+    std::printf("%s\n", outside.c_str());
+  }
+  std::printf("wrote %s\n", out.c_str());
+}
+
+}  // namespace
 
 void registerDecimateCommand(CLI::App& app) {
   struct Arguments {
     std::string dataset, out;
-    double maxError = 0.0, relativeError = 0.0;
-    int target = 0;
+    std::string tiles = "auto";
+    int jobs = defaultJobs();
     bool quiet = false;
+    StoppingArguments stopping;
     SelectionArguments selection;
     ErrorArguments errors;
   };
@@ -28,42 +76,30 @@ void registerDecimateCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("decimate", "Select reference samples by edge-collapse decimation");
   command->add_option("--dataset", arguments->dataset, "Data set directory")->required();
   command->add_option("--out", arguments->out, "Selection file to write (selection.json)")->required()->check(writableFile());
-  CLI::Option* maxError = command->add_option(
-      "--max-error", arguments->maxError,
-      "Stop before a collapse whose error exceeds this absolute value (the paper's 1.85; up to 1e9, above any error, "
-      "which the selection file can hold)")
-      ->check(within(kMaxErrorRange));
-  char relativeHelp[400];
-  std::snprintf(relativeHelp, sizeof relativeHelp,
-                "Stop before a collapse whose error exceeds this many times the dense triangulation's mean triangle error "
-                "(default %.2f, the paper's ratio, unless --max-error or --target is given; up to 1e6, so that the "
-                "threshold stays finite)",
-                kDefaultRelativeError);
-  command->add_option("--relative-error", arguments->relativeError, relativeHelp)
-      ->check(within(kRelativeErrorRange))->excludes(maxError);
-  command->add_option("--target", arguments->target, "Stop at this many samples (alone: no error threshold)")
-      ->check(nonNegativeNumber());
+  addStoppingOptions(*command, arguments->stopping);
+  command->add_option("--tiles", arguments->tiles, tilesHelp())->capture_default_str()->check(tileCountCheck());
+  command->add_option("--jobs", arguments->jobs,
+                      "Tiles decimated at once on this machine (default: the cores); under mpirun, one per rank")
+      ->check(CLI::Range(1, 4096));
   addSelectionOptions(*command, arguments->selection);
   command->add_flag("--quiet", arguments->quiet, "No progress output");
   addErrorOptions(*command, arguments->errors, withSelectionDefaults(TriangleErrorSettings{}.synthesis));
 
   command->callback([arguments] {
     const Arguments& a = *arguments;
-    if (a.target == 1 || a.target == 2) throw InputError("--target", "a triangle needs at least 3 samples");
     const Dataset dataset = Dataset::open(a.dataset);
-    if (a.target > dataset.sampleCount()) {
-      throw InputError("--target", std::to_string(a.target) + " is more than the " + std::to_string(dataset.sampleCount()) +
-                                       " samples of the data set");
+    const ResolvedSelection resolved = resolveSelection(a.selection, a.errors, a.stopping, dataset);
+    const int tiles = tileCountFor(a.tiles, dataset.sampleCount());
+    if (tiles > 1) {
+      decimateTiled(dataset, resolved, tiles, a.jobs, a.out, a.quiet);
+      return;
     }
-    TriangleErrorSettings settings = triangleErrorSettings(a.errors, dataset);
-    applyErrorStride(a.selection, settings);
+    TriangleErrorSettings settings = resolved.errors;
     std::printf("%s\n", describeErrorSettings(settings).c_str());
 
     InterruptScope interruptScope;
     DatasetTriangleErrors errors(dataset, settings, LoadedViews::Samples, a.quiet);
-    SelectionSettings selection = selectionSettings(a.selection, a.maxError, a.target);
-    const bool noGoal = a.maxError <= 0.0 && a.relativeError <= 0.0 && a.target == 0;
-    selection.relativeError = noGoal ? kDefaultRelativeError : a.relativeError;
+    SelectionSettings selection = resolved.selection;
     SelectionRun run = selectReferences(dataset, errors, selection, a.quiet);
     if (selection.relativeError > 0.0) {
       std::printf("error threshold: %.2f x the dense triangulation's mean triangle error %.4f = %.4f\n",

@@ -1,6 +1,9 @@
 #include "app/setup/decimation_options.h"
 
 #include "app/setup/option_checks.h"
+#include "core/support/errors.h"
+
+#include <cstdio>
 
 namespace triwalk {
 
@@ -130,6 +133,40 @@ nlohmann::json describeSelectionSettings(const SelectionSettings& settings, cons
                       {"quality", describeErrorSettings(errors)}});
   description.update(describeSelectionErrors(errors));
   return description;
+}
+
+void addStoppingOptions(CLI::App& command, StoppingArguments& arguments) {
+  CLI::Option* maxError = command.add_option(
+      "--max-error", arguments.maxError,
+      "Stop before a collapse whose error exceeds this absolute value (the paper's 1.85; up to 1e9, above any error, "
+      "which the selection file can hold)")
+      ->check(within(kMaxErrorRange));
+  char relativeHelp[400];
+  std::snprintf(relativeHelp, sizeof relativeHelp,
+                "Stop before a collapse whose error exceeds this many times the dense triangulation's mean triangle error "
+                "(default %.2f, the paper's ratio, unless --max-error or --target is given; up to 1e6, so that the "
+                "threshold stays finite)",
+                kDefaultRelativeError);
+  command.add_option("--relative-error", arguments.relativeError, relativeHelp)
+      ->check(within(kRelativeErrorRange))->excludes(maxError);
+  command.add_option("--target", arguments.target, "Stop at this many samples (alone: no error threshold)")
+      ->check(nonNegativeNumber());
+}
+
+ResolvedSelection resolveSelection(const SelectionArguments& selection, const ErrorArguments& errors,
+                                   const StoppingArguments& stopping, const Dataset& dataset) {
+  if (stopping.target == 1 || stopping.target == 2) throw InputError("--target", "a triangle needs at least 3 samples");
+  if (stopping.target > dataset.sampleCount()) {
+    throw InputError("--target", std::to_string(stopping.target) + " is more than the " +
+                                     std::to_string(dataset.sampleCount()) + " samples of the data set");
+  }
+  ResolvedSelection resolved;
+  resolved.errors = triangleErrorSettings(errors, dataset);
+  applyErrorStride(selection, resolved.errors);
+  resolved.selection = selectionSettings(selection, stopping.maxError, stopping.target);
+  const bool noGoal = stopping.maxError <= 0.0 && stopping.relativeError <= 0.0 && stopping.target == 0;
+  resolved.selection.relativeError = noGoal ? kDefaultRelativeError : stopping.relativeError;
+  return resolved;
 }
 
 }  // namespace triwalk

@@ -49,4 +49,22 @@ TriangleErrorSettings triangleErrorSettings(const ErrorArguments& arguments, con
 void applyErrorStride(const SelectionArguments& arguments, TriangleErrorSettings& settings);
 std::string describeErrorSettings(const TriangleErrorSettings& settings);
 
+// When a decimation stops: --max-error, --relative-error, --target
+// (decimate and tiles plan).
+struct StoppingArguments {
+  double maxError = 0.0, relativeError = 0.0;
+  int target = 0;
+};
+void addStoppingOptions(CLI::App& command, StoppingArguments& arguments);
+
+// Every setting of a decimation, resolved for the data set from the
+// options (the relative threshold kDefaultRelativeError when no stopping
+// rule is given); InputError for a target the data set cannot meet.
+struct ResolvedSelection {
+  TriangleErrorSettings errors;
+  SelectionSettings selection;
+};
+ResolvedSelection resolveSelection(const SelectionArguments& selection, const ErrorArguments& errors,
+                                   const StoppingArguments& stopping, const Dataset& dataset);
+
 }  // namespace triwalk

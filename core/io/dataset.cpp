@@ -182,6 +182,19 @@ Panorama Dataset::loadView(const ViewRecord& view, int width) const {
   return downsamplePanorama(readPanoramaExr(path, glm::ivec2(manifest_.width, manifest_.height)), factor);
 }
 
+Dataset Dataset::withSamples(std::span<const int> indices) const {
+  Dataset subset;
+  subset.directory_ = directory_;
+  subset.manifest_.scene = manifest_.scene;
+  subset.manifest_.width = manifest_.width;
+  subset.manifest_.height = manifest_.height;
+  subset.manifest_.capture = manifest_.capture;
+  subset.manifest_.walkable = walkableRegion();
+  subset.manifest_.samples.reserve(indices.size());
+  for (int i : indices) subset.manifest_.samples.push_back(sample(i));
+  return subset;
+}
+
 WalkableRegion Dataset::walkableRegion() const {
   if (!manifest_.walkable.empty()) return manifest_.walkable;
   const nlohmann::json& area = manifest_.capture.contains("area") ? manifest_.capture["area"] : nlohmann::json();

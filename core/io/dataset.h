@@ -24,6 +24,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,11 @@ public:
   int probeCount() const { return int(manifest_.probes.size()); }
   const ViewRecord& sample(int index) const { return manifest_.samples.at(size_t(index)); }
   const ViewRecord& probe(int index) const { return manifest_.probes.at(size_t(index)); }
+
+  // The data set with only the given samples (indices, sorted) and no
+  // probes, over the same walkable region and files: a tile of a tiled
+  // decimation loads only its views. Sample i of it is sample indices[i].
+  Dataset withSamples(std::span<const int> indices) const;
 
   // Index of the sample with this id, or -1.
   int sampleIndexOfId(int id) const;

@@ -87,6 +87,7 @@ EdgeCollapseDecimator::EdgeCollapseDecimator(const ViewMesh& mesh, DecimationErr
                 "the decimator needs the error source of its cost");
   TRIWALK_CHECK(options.sampleWeights.empty() || options.sampleWeights.size() == mesh.positions().size(),
                 "one weight per sample");
+  TRIWALK_CHECK(options.frozen.empty() || options.frozen.size() == mesh.positions().size(), "one frozen flag per sample");
   for (size_t t = 0; t < triangles_.size(); ++t) {
     for (int v : triangles_[t]) incident_[size_t(v)].push_back(int(t));
   }
@@ -157,6 +158,7 @@ bool EdgeCollapseDecimator::onOpenSegment(int sample, int from, int to) const {
 
 bool EdgeCollapseDecimator::simulate(int a, int b, int placement, PlacementKind kind, Plan& plan,
                                      bool straightStretches) const {
+  if (isFrozen(placement) || (a != placement && isFrozen(a)) || (b != placement && isFrozen(b))) return false;
   const std::vector<int> shared = edgeTriangles(a, b);
   if (shared.empty() || shared.size() > 2) return false;
 
@@ -321,6 +323,7 @@ bool EdgeCollapseDecimator::keepsEveryVertex(int a, int b, const Plan& plan) con
 // falls into no more pieces than it had: on a ring of triangles (a loop of
 // corridors) this cuts the ring open, after which its ends can collapse.
 bool EdgeCollapseDecimator::simulateRemoval(int leaving, int staying, int pieces, Plan& plan) const {
+  if (isFrozen(leaving)) return false;
   if (!boundaryMayShrink() || edgeTriangles(leaving, staying).size() != 1) return false;
   if (boundaryNeighbours(leaving).size() != 2) return false;
   plan.placement = staying;

@@ -125,6 +125,10 @@ struct DecimationOptions {
   // edges it changed keep their cost in the heap until they reach its top,
   // where every edge is costed again before it collapses.
   bool lazyRecosting = true;
+  // By sample index (empty: none): a frozen reference is never removed and
+  // a frozen free sample never becomes a reference. A tiled selection's
+  // seam pass freezes everything but the band along a tile's border.
+  std::vector<char> frozen = {};
 };
 
 // Where the costs come from: triangle errors for the centroid cost,
@@ -240,6 +244,7 @@ private:
   };
   using Edge = std::pair<int, int>;
 
+  bool isFrozen(int sample) const { return !options_.frozen.empty() && options_.frozen[size_t(sample)]; }
   std::vector<int> neighboursOf(int vertex) const;
   std::vector<int> edgeTriangles(int a, int b) const;
   std::vector<int> boundaryNeighbours(int vertex) const;

@@ -38,8 +38,8 @@ SelectionRun selectReferences(const Dataset& dataset, DatasetTriangleErrors& err
   SelectionSettings settings = requested;
   const WalkableRegion region = dataset.walkableRegion();
   settings.refinement.region = &region;
-  settings.refinement.sampleWeights = selectionSampleWeights(dataset);
-  settings.decimation.sampleWeights = settings.refinement.sampleWeights;
+  if (settings.decimation.sampleWeights.empty()) settings.decimation.sampleWeights = selectionSampleWeights(dataset);
+  settings.refinement.sampleWeights = settings.decimation.sampleWeights;
   run.initialSamples = initial.vertexCount();
   if (settings.relativeError > 0.0) {
     run.denseMeanError = meanTriangleError(errors, initial.triangles(), quiet);

@@ -64,7 +64,9 @@ std::unique_ptr<EdgeCollapseDecimator> datasetDecimator(const Dataset& dataset, 
                                                         DecimationErrors errors, DecimationOptions options,
                                                         ProgressReporter* costing = nullptr);
 
-// errors: the data set's panoramas at the error width.
+// errors: the data set's panoramas at the error width. The samples weigh
+// their share of the walkable region unless settings.decimation already
+// holds weights (a tile: its samples' shares of the whole capture).
 SelectionRun selectReferences(const Dataset& dataset, DatasetTriangleErrors& errors, const SelectionSettings& settings,
                               bool quiet);
 

@@ -2,6 +2,7 @@
 
 #include "core/io/json_fields.h"
 #include "core/support/errors.h"
+#include "core/support/input_limits.h"
 
 #include <algorithm>
 #include <charconv>
@@ -59,6 +60,8 @@ double asWritten(float value) {
   std::from_chars(text, end, written);
   return written;
 }
+
+}  // namespace
 
 DecimationOptions readDecimationOptions(const JsonObject& settings) {
   DecimationOptions options;
@@ -124,6 +127,26 @@ std::optional<TriangleErrorSettings> readSelectionErrors(const JsonObject& setti
   }
   return errors;
 }
+
+RefinementOptions readRefinementOptions(const JsonObject& settings) {
+  RefinementOptions options;
+  if (settings.has("refine_radius") && !settings.json().at("refine_radius").is_string()) {
+    options.radius = settings.number("refine_radius");
+    if (!(*options.radius >= 0.0 && *options.radius <= kMaxCoordinateMetres)) settings.fail("refine_radius out of range");
+  }
+  if (settings.has("exchanges") && !settings.json().at("exchanges").is_string()) {
+    options.maxExchanges = settings.integer("exchanges");
+    if (*options.maxExchanges < 0) settings.fail("exchanges must not be negative");
+  }
+  if (settings.has("refine_screen")) options.screenedShare = numberWithin(settings, "refine_screen", OptionRange{0.0f, 1.0f});
+  if (settings.has("refine_priced")) {
+    options.pricedSamples = settings.integer("refine_priced");
+    if (options.pricedSamples < 0) settings.fail("refine_priced must not be negative");
+  }
+  return options;
+}
+
+namespace {
 
 class SelectionReader {
 public:

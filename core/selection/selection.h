@@ -22,7 +22,9 @@
 // Ids are the data set's sample ids; in memory everything is sample indices.
 
 #include "core/io/dataset.h"
+#include "core/io/json_fields.h"
 #include "core/selection/edge_collapse_decimator.h"
+#include "core/selection/selection_refinement.h"
 #include "core/selection/triangle_error.h"
 
 #include <nlohmann/json.hpp>
@@ -78,6 +80,14 @@ nlohmann::json describeDecimationOptions(const DecimationOptions& options);
 // and every warp, blend, hole and error option, by the names of the
 // options that set them.
 nlohmann::json describeSelectionErrors(const TriangleErrorSettings& errors);
+
+// The readers of those settings (the options decimate wrote them from):
+// what a continued decimation and a tile of a tiled one run with. Throw
+// InputError naming the file and field. readSelectionErrors: nothing if
+// the settings name no error option.
+DecimationOptions readDecimationOptions(const JsonObject& settings);
+std::optional<TriangleErrorSettings> readSelectionErrors(const JsonObject& settings, const Dataset& dataset);
+RefinementOptions readRefinementOptions(const JsonObject& settings);
 
 // Writes atomically.
 void writeSelection(const std::filesystem::path& path, const Selection& selection, const Dataset& dataset);

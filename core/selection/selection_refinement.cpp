@@ -351,7 +351,11 @@ public:
   // the result is never worse than local moves alone, and no single move
   // of either kind improves it.
   void refine(int maxExchanges, ProgressReporter* progress) {
-    moveLocally(std::set<int>(references_.begin(), references_.end()), progress);
+    std::set<int> movable;
+    for (int r : references_) {
+      if (!isFrozen(r)) movable.insert(r);
+    }
+    moveLocally(movable, progress);
     while (result_.exchanges < maxExchanges) {
       throwIfInterrupted();
       const ViewMesh before = mesh_;
@@ -364,12 +368,16 @@ public:
       std::set<int> flagged = {added};
       for (int v : neighboursOf(before, removed)) flagged.insert(v);
       for (int v : neighboursOf(mesh_, added)) flagged.insert(v);
-      std::erase_if(flagged, [&](int v) { return !std::binary_search(references_.begin(), references_.end(), v); });
+      std::erase_if(flagged, [&](int v) {
+        return isFrozen(v) || !std::binary_search(references_.begin(), references_.end(), v);
+      });
       moveLocally(flagged, progress);
     }
   }
 
 private:
+  bool isFrozen(int sample) const { return !options_.frozen.empty() && options_.frozen[size_t(sample)]; }
+
   // Local moves within radius, pass after pass over the flagged references
   // (at most maxPasses).
   void moveLocally(std::set<int> flagged, ProgressReporter* progress) {
@@ -387,7 +395,7 @@ private:
           continue;  // moved away earlier in this pass
         std::vector<std::vector<int>> tries;
         for (int c = 0; c < int(positions_.size()); ++c) {
-          if (std::binary_search(references_.begin(), references_.end(), c)) continue;
+          if (isFrozen(c) || std::binary_search(references_.begin(), references_.end(), c)) continue;
           if (glm::length(positions_[size_t(c)] - positions_[size_t(moving)]) > result_.radius) continue;
           tries.push_back(replaced(moving, c));
         }
@@ -397,6 +405,7 @@ private:
         for (int v : neighboursOf(mesh_, moving)) flagged.insert(v);
         for (int v : neighboursOf(*best->mesh, placement)) flagged.insert(v);
         flagged.insert(placement);
+        std::erase_if(flagged, [&](int v) { return isFrozen(v); });
         accept(moving, *best);
         if (progress) {
           char status[96];
@@ -644,15 +653,19 @@ private:
     const std::vector<Candidate> base = evaluate({references_}, scope);
     if (!base[0].mesh) return std::nullopt;
     std::vector<std::vector<int>> removals, additions;
-    for (int v : references_) removals.push_back(replaced(v, -1));
-    const std::vector<int> insertions = exchangeCandidates(positions_, references_);
+    std::vector<int> removable;
+    for (int v : references_) {
+      if (!isFrozen(v)) removable.push_back(v), removals.push_back(replaced(v, -1));
+    }
+    std::vector<int> insertions = exchangeCandidates(positions_, references_);
+    std::erase_if(insertions, [&](int c) { return isFrozen(c); });
     for (int c : insertions) additions.push_back(replaced(-1, c));
     if (searching) {
       searching->setStatus(std::to_string(removals.size()) + " removals, " + std::to_string(additions.size()) +
                            " insertions");
     }
     const std::vector<std::pair<double, int>> losses =
-        lowestChanges(removals, references_, base[0].objective, kRemovals, scope, errorsProgress);
+        lowestChanges(removals, removable, base[0].objective, kRemovals, scope, errorsProgress);
     const std::vector<std::pair<double, int>> gains =
         lowestChanges(additions, insertions, base[0].objective, kInsertions, scope, errorsProgress);
     std::vector<std::tuple<double, int, int>> pairs;

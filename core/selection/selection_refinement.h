@@ -101,6 +101,10 @@ struct RefinementOptions {
   // changes, it is priced again on this many times as many and ruled out
   // by the same two-standard-error test; 1: scored over all of them at once.
   int repricing = 4;
+  // By sample index (empty: none): a frozen reference never moves or
+  // leaves, a frozen free sample is never taken (a tiled selection's seam
+  // pass refines only the band along a tile's border).
+  std::vector<char> frozen = {};
 };
 
 struct RefinementResult {

@@ -1,0 +1,42 @@
+#pragma once
+// Cutting a capture into tiles for tiled decimation (docs/DESIGN.md,
+// "Tiled selection"). Each tile has a core, a rectangle whose samples it
+// decides, and a margin around it, whose samples it decimates too but
+// whose references it drops: a reference near a core's border is chosen
+// knowing the neighbours a walker there would also use. The cores are
+// cut by median splits of the samples, the most crowded core split
+// across its longer side, so that cores hold nearly equal counts however
+// the samples are spread (a corridor, a hall, a building of rooms).
+
+#include <glm/glm.hpp>
+
+#include <span>
+#include <vector>
+
+namespace triwalk {
+
+struct TileCore {
+  glm::dvec2 lower{0.0}, upper{0.0};  // the rectangle; its samples are members
+  std::vector<int> members;           // sample indices, sorted
+};
+
+struct Tile {
+  TileCore core;
+  std::vector<int> samples;  // core and margin: sample indices, sorted
+};
+
+// Splits the samples into `count` cores (fewer if there are too few samples
+// to split): the core with the most samples (the first on a tie) is split at
+// the median across its longer side, between two distinct coordinates, so
+// no sample lies on a border. Deterministic.
+std::vector<TileCore> splitIntoCores(std::span<const glm::dvec2> positions, int count);
+
+// Each core with the samples within `margin` metres of its rectangle.
+std::vector<Tile> tilesWithMargin(std::span<const glm::dvec2> positions, std::vector<TileCore> cores, double margin);
+
+// The samples within `distance` of a core's border inside it: the band a
+// seam pass may change.
+std::vector<int> bandMembers(std::span<const glm::dvec2> positions, const TileCore& core, double distance,
+                             const std::vector<TileCore>& cores);
+
+}  // namespace triwalk

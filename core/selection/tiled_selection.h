@@ -1,0 +1,84 @@
+#pragma once
+// Tiled selection (docs/DESIGN.md, "Tiled selection"): a capture too large
+// for one decimation is cut into tiles (core/selection/tile_partition.h),
+// each tile decimated and refined on its own views, and the tiles
+// stitched: the references of every core are kept, then a seam pass,
+// tile by tile, lets collapses and refinement change only the band along
+// the core's borders, where two tiles' choices meet. Every tile and every
+// seam step reads only its own views, so memory depends on the tile size
+// and time grows linearly with the capture. The tiles are independent
+// jobs: whatever runs them (threads, MPI ranks, a batch scheduler), the
+// selection is the same, byte for byte.
+
+#include "core/io/dataset.h"
+#include "core/selection/selection.h"
+#include "core/selection/tile_partition.h"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <vector>
+
+namespace triwalk {
+
+// Above this many samples, decimate tiles by itself; cores hold about this
+// many samples each (see the definition for the measurement).
+extern const int kTileCoreSamples;
+
+// What every tile runs with, resolved once for the whole capture.
+struct TilePlan {
+  // What was asked ({"settings": ..., "tiles": N}): a rerun asking the same
+  // finds the plan and the tiles already run, and goes on from there.
+  nlohmann::json request;
+  std::string datasetDirectory;  // absolute
+  int datasetSamples = 0;
+  // The selection file's settings (describeSelectionSettings), with the
+  // refinement radius and the absolute threshold resolved for the whole
+  // capture: a relative threshold is measured against the whole capture's
+  // dense mean (the tiles' own means would disagree).
+  nlohmann::json settings;
+  double denseMeanError = 0.0;  // 0: not measured (an absolute threshold or a target alone)
+  double margin = 0.0;          // metres of samples around each core a tile also decimates
+  double band = 0.0;            // metres from a core's border the seam pass may change
+  int target = 0;               // total sample count asked for; 0: none
+  std::vector<Tile> tiles;
+  std::vector<int> tileTargets;  // per tile (with target): its share of the count
+};
+
+// What one tile chose: the references of its core (sample indices, sorted).
+struct TileOutcome {
+  std::vector<int> references;
+  size_t collapses = 0, moves = 0;
+  double seconds = 0.0;
+};
+
+struct TilePlanRequest {
+  nlohmann::json settings;  // describeSelectionSettings of the request (max_error, relative_error, target)
+  int tiles = 0;            // 0: one per kTileCoreSamples samples
+  int jobs = 1;             // tiles measured at once
+};
+
+// Cuts the capture into tiles and resolves the settings; measures the dense
+// mean by tiles (each loading only its views, `jobs` at a time) when the
+// threshold is relative. Progress unless quiet; Ctrl-C throws Interrupted.
+TilePlan planTiles(const Dataset& dataset, const TilePlanRequest& request, bool quiet);
+
+// Decimates and refines tile k on its views alone; layerCacheBytes bounds
+// its cache of warped layers.
+TileOutcome runTile(const Dataset& dataset, const TilePlan& plan, int k, size_t layerCacheBytes, bool quiet);
+
+struct StitchResult {
+  Selection selection;  // method "tiled_edge_collapse", settings the plan's
+  size_t unionSamples = 0;  // references of the cores before the seam pass
+  size_t seamCollapses = 0, seamMoves = 0;
+};
+
+// The union of the tiles' references, the seam pass tile by tile, and the
+// final triangulation (walls respected). outcomes: one per tile, in order.
+StitchResult stitchTiles(const Dataset& dataset, const TilePlan& plan, const std::vector<TileOutcome>& outcomes,
+                         size_t layerCacheBytes, bool quiet);
+
+// The layer cache each of `concurrent` tile runs in one process may use.
+size_t tileLayerCacheBytes(int concurrent);
+
+}  // namespace triwalk

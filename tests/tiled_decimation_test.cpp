@@ -1,0 +1,143 @@
+// Tiled decimation from the command line (issue 69): one small floor cut
+// into 4 tiles, run every way a user can run it: the selection must be the
+// same byte for byte, a killed tile is rerun alone, stitching refuses an
+// incomplete set in one line, and the stitched selection respects the
+// walls and serves every sample.
+
+#include "core/io/dataset.h"
+#include "core/selection/selection.h"
+#include "tests/command_line_runner.h"
+
+#include <doctest/doctest.h>
+
+#include <unistd.h>
+
+namespace triwalk {
+namespace {
+
+using testing::RunResult;
+using testing::readTextFileOrEmpty;
+using testing::runTriwalk;
+
+// The floor the tests tile: 2 x 1 rooms, 234 samples half a metre apart,
+// 32 pixels wide (errors at 32x16), captured once for every test case.
+const std::filesystem::path& floorDataset() {
+  static testing::TemporaryDirectory directory;
+  static const std::filesystem::path floor = [] {
+    const std::filesystem::path path = directory / "floor";
+    const RunResult run = runTriwalk(directory, "capture --quiet --scene builtin-floor:2x1 --width 32 --probes 4 --spacing 0.5 --out " +
+                                                    path.string(),
+                                     true);
+    INFO(run.err);
+    REQUIRE(run.status == 0);
+    return path;
+  }();
+  return floor;
+}
+
+// mpirun as a cluster user runs it (as root here, which OpenMPI refuses
+// unless told). OpenMPI's own allocations outlive MPI_Finalize, so under the
+// sanitizers its ranks run without leak detection, as OpenGL runs do.
+RunResult runUnderMpirun(const testing::TemporaryDirectory& scratch, int ranks, const std::string& arguments) {
+  const std::filesystem::path out = scratch / "mpi_stdout.txt", err = scratch / "mpi_stderr.txt";
+  const std::string root = geteuid() == 0 ? " --allow-run-as-root" : "";
+  const std::string command = "ASAN_OPTIONS=\"$ASAN_OPTIONS:detect_leaks=0\" mpirun" + root + " --oversubscribe -np " +
+                              std::to_string(ranks) + " " + TRIWALK_BINARY + " " + arguments + " > " + out.string() +
+                              " 2> " + err.string();
+  const int status = std::system(command.c_str());
+  return {status, readTextFileOrEmpty(out), readTextFileOrEmpty(err)};
+}
+
+std::string bytesOf(const std::filesystem::path& path) { return readTextFileOrEmpty(path); }
+
+}  // namespace
+
+TEST_CASE("a tiled selection is the same byte for byte with --jobs 1, --jobs 2, tiles plan/run/stitch and mpirun -np 2") {
+  testing::TemporaryDirectory directory;
+  const std::string dataset = floorDataset().string();
+  const std::filesystem::path one = directory / "jobs1.json";
+  const RunResult single = runTriwalk(directory, "decimate --quiet --tiles 4 --jobs 1 --dataset " + dataset + " --out " + one.string());
+  INFO(single.err);
+  REQUIRE(single.status == 0);
+  CHECK(single.out.find("in 4 tiles") != std::string::npos);
+  CHECK(!std::filesystem::exists(directory / "jobs1.json.tiles"));  // the work folder goes once the selection is written
+  const std::string reference = bytesOf(one);
+  const Selection selection = readSelection(one, Dataset::open(floorDataset()));
+  CHECK(selection.method == "tiled_edge_collapse");
+  CHECK(selection.samples.size() < 234 / 4);
+
+  const RunResult two = runTriwalk(directory, "decimate --quiet --tiles 4 --jobs 2 --dataset " + dataset + " --out " +
+                                                  (directory / "jobs2.json").string());
+  REQUIRE(two.status == 0);
+  CHECK(bytesOf(directory / "jobs2.json") == reference);
+
+  const std::string work = (directory / "work").string();
+  REQUIRE(runTriwalk(directory, "tiles plan --quiet --tiles 4 --dataset " + dataset + " --out " + work).status == 0);
+  for (int k = 0; k < 4; ++k) {
+    REQUIRE(runTriwalk(directory, "tiles run --quiet --plan " + work + " --tile " + std::to_string(k)).status == 0);
+  }
+  REQUIRE(runTriwalk(directory, "tiles stitch --quiet --plan " + work + " --out " + (directory / "batch.json").string()).status == 0);
+  CHECK(bytesOf(directory / "batch.json") == reference);
+
+  const RunResult mpi = runUnderMpirun(directory, 2, "decimate --quiet --tiles 4 --dataset " + dataset + " --out " +
+                                                         (directory / "mpi.json").string());
+  INFO(mpi.err);
+  REQUIRE(mpi.status == 0);
+  CHECK(bytesOf(directory / "mpi.json") == reference);
+}
+
+TEST_CASE("a killed tile leaves no outcome: stitching refuses in one line naming it, and the tile rerun alone gives the same selection") {
+  testing::TemporaryDirectory directory;
+  const std::string dataset = floorDataset().string();
+  REQUIRE(runTriwalk(directory, "decimate --quiet --tiles 4 --jobs 2 --dataset " + dataset + " --out " +
+                                    (directory / "whole.json").string()).status == 0);
+  const std::string work = (directory / "work").string();
+  REQUIRE(runTriwalk(directory, "tiles plan --quiet --tiles 4 --dataset " + dataset + " --out " + work).status == 0);
+  for (int k : {0, 1, 3}) REQUIRE(runTriwalk(directory, "tiles run --quiet --plan " + work + " --tile " + std::to_string(k)).status == 0);
+  // Tile 2 takes over a second: killed a tenth of the way in.
+  const std::string kill = "timeout -s KILL 0.15 " + std::string(TRIWALK_BINARY) + " tiles run --quiet --plan " + work + " --tile 2";
+  const int killed = std::system(kill.c_str());
+  REQUIRE(WIFEXITED(killed));
+  REQUIRE(WEXITSTATUS(killed) == 137);
+  CHECK(!std::filesystem::exists(directory / "work" / "tile_0002.json"));
+
+  const RunResult refused = runTriwalk(directory, "tiles stitch --plan " + work + " --out " + (directory / "partial.json").string());
+  CHECK(refused.status != 0);
+  CHECK(refused.err == "triwalk: error: " + work + "/tile_0002.json: tile 2 of 4 has not run for this plan (run: triwalk "
+                       "tiles run --plan " + work + " --tile 2)\n");
+  CHECK(!std::filesystem::exists(directory / "partial.json"));
+
+  REQUIRE(runTriwalk(directory, "tiles run --quiet --plan " + work + " --tile 2").status == 0);
+  REQUIRE(runTriwalk(directory, "tiles stitch --quiet --plan " + work + " --out " + (directory / "stitched.json").string()).status == 0);
+  CHECK(bytesOf(directory / "stitched.json") == bytesOf(directory / "whole.json"));
+
+  // decimate itself goes on from the tiles a stopped run left in its work folder.
+  const std::filesystem::path resumed = directory / "resumed.json";
+  std::filesystem::create_directories(directory / "resumed.json.tiles");
+  std::filesystem::copy(directory / "work", directory / "resumed.json.tiles", std::filesystem::copy_options::recursive);
+  std::filesystem::remove(directory / "resumed.json.tiles" / "tile_0001.json");
+  const RunResult going = runTriwalk(directory, "decimate --tiles 4 --jobs 1 --dataset " + dataset + " --out " + resumed.string());
+  INFO(going.err);
+  REQUIRE(going.status == 0);
+  CHECK(going.out.find("going on with the tiles of") != std::string::npos);
+  CHECK(going.out.find("3 of 4 tiles already run for this plan") != std::string::npos);
+  CHECK(bytesOf(resumed) == bytesOf(directory / "whole.json"));
+}
+
+TEST_CASE("a stitched selection keeps its view triangles inside the walls and serves every sample of the region") {
+  testing::TemporaryDirectory directory;
+  const std::filesystem::path out = directory / "tiled.json";
+  REQUIRE(runTriwalk(directory, "decimate --quiet --tiles 4 --dataset " + floorDataset().string() + " --out " + out.string()).status == 0);
+  const Dataset dataset = Dataset::open(floorDataset());
+  const Selection selection = readSelection(out, dataset);
+  const WalkableRegion region = dataset.walkableRegion();
+  REQUIRE(!selection.triangles.empty());
+  for (const Triangle& t : selection.triangles) {
+    const glm::dvec2 a(dataset.sample(t[0]).position), b(dataset.sample(t[1]).position), c(dataset.sample(t[2]).position);
+    CHECK(region.containsTriangle(a, b, c));
+  }
+  const ViewMesh mesh = selectionMesh(selection, dataset);
+  for (int i = 0; i < dataset.sampleCount(); ++i) CHECK(mesh.locate(glm::dvec2(dataset.sample(i).position)) >= 0);
+}
+
+}  // namespace triwalk

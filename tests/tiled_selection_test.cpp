@@ -1,0 +1,147 @@
+// Tiled selection's pieces on exact inputs: the cut into cores, margins and
+// seam bands, and the frozen samples a seam pass relies on (a frozen
+// reference never leaves, a frozen free sample is never taken), checked
+// against the same runs without them.
+
+#include "core/geometry/view_mesh.h"
+#include "core/selection/edge_collapse_decimator.h"
+#include "core/selection/selection_refinement.h"
+#include "core/selection/tile_partition.h"
+#include "tests/test_support.h"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <set>
+
+namespace triwalk {
+namespace {
+
+// Errors that grow with the distance from the nearest reference to the
+// destination: a decimation removes references where they crowd.
+class NearestReferenceErrors final : public ReconstructionErrorSource {
+public:
+  explicit NearestReferenceErrors(const std::vector<glm::dvec2>& positions) : positions_(positions) {}
+  void computeReconstructionErrors(std::span<const SampleReconstruction> requests, std::span<double> errors) override {
+    for (size_t i = 0; i < requests.size(); ++i) {
+      double nearest = 1e9;
+      for (int r : requests[i].references) {
+        nearest = std::min(nearest, glm::length(positions_[size_t(r)] - positions_[size_t(requests[i].destination)]));
+      }
+      errors[i] = nearest;
+    }
+  }
+
+private:
+  const std::vector<glm::dvec2>& positions_;
+};
+
+}  // namespace
+
+TEST_CASE("cores: median splits into equal counts across the longer side, every sample in one core, none on a border") {
+  const std::vector<glm::dvec2> positions = testing::unitGrid(16, 4);  // 64 samples, 15 m x 3 m
+  const std::vector<TileCore> cores = splitIntoCores(positions, 4);
+  REQUIRE(cores.size() == 4);
+  std::vector<int> seen;
+  for (const TileCore& core : cores) {
+    CHECK(core.members.size() == 16);  // cut across x three times: 4 columns each
+    for (int i : core.members) {
+      const glm::dvec2 p = positions[size_t(i)];
+      CHECK(p.x > core.lower.x - 1e-12);
+      CHECK(p.x < core.upper.x + 1e-12);
+      for (const TileCore& other : cores) {
+        if (&other == &core) continue;
+        // Halfway between lattice columns: never on another core's rectangle.
+        CHECK(!(p.x >= other.lower.x && p.x <= other.upper.x && p.y >= other.lower.y && p.y <= other.upper.y));
+      }
+      seen.push_back(i);
+    }
+    CHECK(core.upper.y - core.lower.y == doctest::Approx(3.0));  // the short side was never cut
+  }
+  std::sort(seen.begin(), seen.end());
+  std::vector<int> all(positions.size());
+  for (size_t i = 0; i < all.size(); ++i) all[i] = int(i);
+  CHECK(seen == all);
+  CHECK(cores[0].upper.x == doctest::Approx(3.5));
+  CHECK(cores[1].upper.x == doctest::Approx(7.5));
+  CHECK(cores[2].upper.x == doctest::Approx(11.5));
+
+  // Three cores: the crowded half is split again, the other kept whole.
+  const std::vector<TileCore> three = splitIntoCores(positions, 3);
+  REQUIRE(three.size() == 3);
+  CHECK(three[0].members.size() == 16);
+  CHECK(three[1].members.size() == 16);
+  CHECK(three[2].members.size() == 32);
+  // Samples that all share a position cannot be split: one core, not a loop.
+  const std::vector<glm::dvec2> stacked(5, glm::dvec2(1.0, 1.0));
+  CHECK(splitIntoCores(stacked, 4).size() == 1);
+}
+
+TEST_CASE("a tile holds its core and the samples within the margin of it, and the band is the core's samples near another core") {
+  const std::vector<glm::dvec2> positions = testing::unitGrid(16, 4);
+  const std::vector<TileCore> cores = splitIntoCores(positions, 4);
+  const std::vector<Tile> tiles = tilesWithMargin(positions, cores, 1.0);
+  REQUIRE(tiles.size() == 4);
+  // Core 1 holds columns 4-7 (border at 3.5 and 7.5): within 1 m, columns 3 and 8 too.
+  CHECK(tiles[1].samples.size() == 6 * 4);
+  CHECK(tiles[0].samples.size() == 5 * 4);  // columns 0-4
+  for (int i : tiles[1].samples) CHECK((positions[size_t(i)].x >= 3.0 && positions[size_t(i)].x <= 8.0));
+  // Band 0.5 m: columns 4 and 7 of core 1 (0.5 m from the borders), column 3 of core 0.
+  const std::vector<int> band1 = bandMembers(positions, cores[1], 0.5, cores);
+  CHECK(band1.size() == 8);
+  for (int i : band1) CHECK((positions[size_t(i)].x == 4.0 || positions[size_t(i)].x == 7.0));
+  const std::vector<int> band0 = bandMembers(positions, cores[0], 0.5, cores);
+  CHECK(band0.size() == 4);  // the capture's own edge (x = 0) is no seam
+}
+
+TEST_CASE("frozen samples: collapses never remove a frozen reference, and refinement never moves one or takes a frozen sample") {
+  const std::vector<glm::dvec2> positions = testing::unitGrid(8, 6);
+  std::vector<int> everything(positions.size());
+  for (size_t i = 0; i < everything.size(); ++i) everything[i] = int(i);
+  const ViewMesh dense = ViewMesh::delaunay(positions, everything, "test");
+  std::vector<char> frozen(positions.size(), 0);
+  for (size_t i = 0; i < positions.size(); ++i) frozen[i] = positions[i].x < 3.5 ? 1 : 0;  // the left half
+
+  auto decimate = [&](const std::vector<char>& mask) {
+    NearestReferenceErrors errors(positions);
+    DecimationOptions options;
+    options.maxError = 0.0;
+    options.targetSamples = 10;
+    options.frozen = mask;
+    EdgeCollapseDecimator decimator(dense, DecimationErrors{nullptr, &errors}, options);
+    decimator.run();
+    return decimator.mesh();
+  };
+  const ViewMesh free = decimate({});
+  const ViewMesh partly = decimate(frozen);
+  auto frozenKept = [&](const ViewMesh& mesh) {
+    size_t kept = 0;
+    for (int v : mesh.vertices()) kept += size_t(frozen[size_t(v)]);
+    return kept;
+  };
+  const size_t frozenCount = size_t(std::count(frozen.begin(), frozen.end(), 1));
+  CHECK(frozenKept(free) < frozenCount);     // without the mask, the left half loses references too
+  CHECK(frozenKept(partly) == frozenCount);  // with it, every one stays
+  CHECK(partly.vertexCount() < dense.vertexCount());  // and the right half was decimated
+
+  NearestReferenceErrors errors(positions);
+  RefinementOptions refinement{1.5, 8, {}, nullptr, {}};
+  refinement.frozen = frozen;
+  const RefinementResult refined = refineSelection(positions, partly.triangles(), errors, refinement);
+  for (const Collapse& move : refined.moves) {
+    CHECK(!frozen[size_t(move.first)]);
+    CHECK(!frozen[size_t(move.placement)]);
+  }
+  std::set<int> after;
+  for (const Triangle& t : refined.triangles) after.insert(t.begin(), t.end());
+  for (size_t i = 0; i < positions.size(); ++i) {
+    if (frozen[i]) CHECK(after.count(int(i)) == 1);
+  }
+  // Without the mask the same refinement moves references of the left half
+  // (so the check above is not vacuous).
+  const RefinementResult unmasked = refineSelection(positions, partly.triangles(), errors, {1.5, 8, {}, nullptr, {}});
+  CHECK(std::any_of(unmasked.moves.begin(), unmasked.moves.end(),
+                    [&](const Collapse& move) { return frozen[size_t(move.first)] || frozen[size_t(move.placement)]; }));
+}
+
+}  // namespace triwalk

@@ -5,6 +5,7 @@
 #include "app/commands/commands.h"
 #include "app/setup/option_checks.h"
 #include "app/setup/scene_loading.h"
+#include "app/setup/tile_jobs.h"
 #include "core/support/errors.h"
 #include "render/gl/gl_context.h"
 #include "render/scene/scene_description.h"
@@ -23,15 +24,22 @@ void registerBenchCommand(CLI::App& app) {
     std::string dataset, selection;
     std::string regionScene = "/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc";
     SceneImportArguments regionImport;
+    std::vector<std::string> tileFloors = {"5x2", "10x4"};
+    int jobs = defaultJobs();
   };
   auto arguments = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand("bench", "Measure throughput and print a table (machine, sizes, figures)");
   command
       ->add_option("--only", arguments->only,
-                   "Run only these groups: capture, region, decimate, scaling, warp, render, viewer (scaling: not in "
+                   "Run only these groups: capture, region, decimate, scaling, tiles, warp, render, viewer (scaling and tiles: not in "
                    "the default run)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"capture", "region", "decimate", "scaling", "warp", "render", "viewer"}));
+      ->check(CLI::IsMember({"capture", "region", "decimate", "scaling", "tiles", "warp", "render", "viewer"}));
+  command->add_option("--tile-floors", arguments->tileFloors,
+                      "Generated floors (builtin-floor sizes) the tiles figure decimates, smallest first")
+      ->delimiter(',')->capture_default_str();
+  command->add_option("--jobs", arguments->jobs, "Tile processes at once in the tiles figure (default: the cores)")
+      ->check(CLI::Range(1, 4096));
   command->add_option("--gl", arguments->gl, "Headless OpenGL: auto, egl or osmesa")->capture_default_str();
   // The end-to-end figure captures views / 4 paths of 4, and a capture needs at least 2 paths.
   command
@@ -72,6 +80,11 @@ void registerBenchCommand(CLI::App& app) {
     // Two captures and decimations, about half an hour here: only when asked.
     if (only.count("scaling")) {
       benchScaling(table, loadSceneDescription(builtinScenePath()), arguments->decimationErrors);
+    }
+    // Captures of floors and their tiled decimations, most of an hour here:
+    // only when asked.
+    if (only.count("tiles")) {
+      benchTiles(table, arguments->tileFloors, arguments->decimationErrors.width, arguments->jobs);
     }
     if (selected("warp") || selected("render")) {
       const BenchViews views = captureBenchViews();

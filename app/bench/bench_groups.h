@@ -51,6 +51,11 @@ void benchDecimate(BenchTable& table, const Scene& scene, const std::string& dat
 // peak memory of each, and their ratios (issue 15's scaling row).
 void benchScaling(BenchTable& table, const Scene& scene, const BenchSelectionErrors& errors);
 
+// Tiled decimation of generated floors (builtin-floor:CxR each), captured
+// at width, run as separate processes `jobs` at a time: time and each
+// process's peak memory, and their growth from the first floor to the last.
+void benchTiles(BenchTable& table, const std::vector<std::string>& floors, int width, int jobs);
+
 // One decimation as the main job runs it (`decimate --max-error 1.85`):
 // the panoramas loaded at the error width, the collapses, the refinement.
 struct BenchDecimation {

@@ -27,9 +27,6 @@ ScalingRun decimateCapture(const Scene& scene, int paths, int perPath, const Ben
   return result;
 }
 
-std::string ratio(double to, double from) {
-  return from > 0.0 ? formatNumber(to / from, 2) + "x" : "-";
-}
 
 }  // namespace
 
@@ -62,14 +59,14 @@ void benchScaling(BenchTable& table, const Scene& scene, const BenchSelectionErr
   const std::string sizes =
       std::to_string(small.samples) + " -> " + std::to_string(large.samples) + " samples " + widthText;
   table.add({"decimation time (collapses + refinement) as the capture grows", sizes,
-             ratio(large.seconds(), small.seconds()),
+             formatRatio(large.seconds(), small.seconds()),
              formatNumber(small.seconds(), 1) + " -> " + formatNumber(large.seconds(), 1) + " s; collapses " +
-                 ratio(large.decimation.run.collapseSeconds, small.decimation.run.collapseSeconds) + ", refinement " +
-                 ratio(large.decimation.run.refinementSeconds, small.decimation.run.refinementSeconds) +
+                 formatRatio(large.decimation.run.collapseSeconds, small.decimation.run.collapseSeconds) + ", refinement " +
+                 formatRatio(large.decimation.run.refinementSeconds, small.decimation.run.refinementSeconds) +
                  "; issue 15's target <= 4.5x"});
   const bool ownPeaks = small.decimation.peakIsOwn && large.decimation.peakIsOwn;
   table.add({"decimation peak memory as the capture grows", sizes,
-             ratio(large.decimation.peakGigabytes, small.decimation.peakGigabytes),
+             formatRatio(large.decimation.peakGigabytes, small.decimation.peakGigabytes),
              formatNumber(small.decimation.peakGigabytes, 2) + " -> " +
                  formatNumber(large.decimation.peakGigabytes, 2) + " GiB" +
                  (ownPeaks ? "" : " (the kernel kept the earlier peak: not each run's own)") +

@@ -44,6 +44,10 @@ std::string machineDescription() {
   return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads, " + memory;
 }
 
+std::string formatRatio(double to, double from) {
+  return from > 0.0 ? formatNumber(to / from, 2) + "x" : "-";
+}
+
 std::string formatNumber(double value, int decimals) {
   char text[64];
   std::snprintf(text, sizeof text, "%.*f", decimals, value);

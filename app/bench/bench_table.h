@@ -26,6 +26,8 @@ private:
 
 std::string machineDescription();
 std::string formatNumber(double value, int decimals);
+// "4.12x": to over from, or "-" when from is not positive.
+std::string formatRatio(double to, double from);
 // "median / p95 ms" of frame times: the values at ranks n/2 and n*95/100.
 std::string formatMedianAndP95(std::vector<double> milliseconds);
 

@@ -12,6 +12,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <fstream>
+
 namespace triwalk {
 namespace {
 
@@ -138,6 +141,48 @@ TEST_CASE("a stitched selection keeps its view triangles inside the walls and se
   }
   const ViewMesh mesh = selectionMesh(selection, dataset);
   for (int i = 0; i < dataset.sampleCount(); ++i) CHECK(mesh.locate(glm::dvec2(dataset.sample(i).position)) >= 0);
+}
+
+}  // namespace triwalk
+
+namespace triwalk {
+
+TEST_CASE("tiles refuses bad input in one line before any work: a bad --tiles, a tile not in the plan, a damaged plan, another plan's tile") {
+  testing::TemporaryDirectory directory;
+  const std::string dataset = floorDataset().string();
+  const RunResult badCount = runTriwalk(directory, "decimate --tiles many --dataset " + dataset + " --out " +
+                                                       (directory / "x.json").string());
+  CHECK(badCount.status != 0);
+  CHECK(badCount.err.find("--tiles: must be auto, off or a number of tiles from 1 to 100000, got 'many'") != std::string::npos);
+
+  const std::string work = (directory / "work").string();
+  REQUIRE(runTriwalk(directory, "tiles plan --quiet --tiles 4 --dataset " + dataset + " --out " + work).status == 0);
+  const RunResult outside = runTriwalk(directory, "tiles run --plan " + work + " --tile 4");
+  CHECK(outside.status != 0);
+  CHECK(outside.err == "triwalk: error: --tile: 4 is not a tile of " + work + " (0 to 3)\n");
+
+  // A tile made for another plan is not stitched: it counts as not run.
+  REQUIRE(runTriwalk(directory, "tiles run --quiet --plan " + work + " --tile 0").status == 0);
+  const std::string other = (directory / "other").string();
+  REQUIRE(runTriwalk(directory, "tiles plan --quiet --tiles 4 --relative-error 2 --dataset " + dataset + " --out " + other).status == 0);
+  std::filesystem::copy_file(directory / "work" / "tile_0000.json", directory / "other" / "tile_0000.json");
+  const RunResult stale = runTriwalk(directory, "tiles stitch --plan " + other + " --out " + (directory / "y.json").string());
+  CHECK(stale.status != 0);
+  CHECK(stale.err.find("tile_0000.json: tile 0 of 4 has not run for this plan") != std::string::npos);
+
+  // A damaged plan: one line naming it, for every command that reads it.
+  {
+    std::ofstream damaged(directory / "work" / "plan.json");
+    damaged << "{\"format\": \"triwalk-tile-plan\", \"version\": 1, \"tiles\": [";
+  }
+  for (const std::string& command : {"tiles run --plan " + work + " --tile 0",
+                                     "tiles stitch --plan " + work + " --out " + (directory / "z.json").string()}) {
+    const RunResult damaged = runTriwalk(directory, command);
+    CHECK(damaged.status != 0);
+    CHECK(damaged.err.rfind("triwalk: error: " + work + "/plan.json: ", 0) == 0);
+    CHECK(std::count(damaged.err.begin(), damaged.err.end(), '\n') == 1);
+  }
+  CHECK(!std::filesystem::exists(directory / "z.json"));
 }
 
 }  // namespace triwalk

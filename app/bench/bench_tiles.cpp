@@ -62,11 +62,12 @@ struct TiledFloor {
   int samples = 0, tiles = 0;
   double captureSeconds = 0.0, planSeconds = 0.0, tilesSeconds = 0.0, stitchSeconds = 0.0;
   double tilePeak = 0.0, stitchPeak = 0.0, planPeak = 0.0;
+  ChildRun untiled;  // the same floor decimated whole (the first floor only)
   size_t largestTile = 0, references = 0;
   double seconds() const { return planSeconds + tilesSeconds + stitchSeconds; }
 };
 
-TiledFloor decimateFloor(const std::string& floor, int width, int jobs) {
+TiledFloor decimateFloor(const std::string& floor, int width, int jobs, bool alsoWhole) {
   const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("triwalk-bench-tiles-" + floor);
   std::filesystem::remove_all(folder);
   struct Cleanup {
@@ -108,6 +109,10 @@ TiledFloor decimateFloor(const std::string& floor, int width, int jobs) {
   result.stitchSeconds = stitch.seconds;
   result.stitchPeak = stitch.peakGigabytes;
   result.references = readSelection(folder / "selection.json", dataset).samples.size();
+  if (alsoWhole) {
+    result.untiled = runChild({"decimate", "--quiet", "--tiles", "off", "--dataset", data, "--out", (folder / "whole.json").string()},
+                              "the untiled decimation");
+  }
   return result;
 }
 
@@ -117,7 +122,7 @@ TiledFloor decimateFloor(const std::string& floor, int width, int jobs) {
 void benchTiles(BenchTable& table, const std::vector<std::string>& floors, int width, int jobs) {
   std::vector<TiledFloor> runs;
   for (const std::string& floor : floors) {
-    const TiledFloor run = decimateFloor(floor, width, jobs);
+    const TiledFloor run = decimateFloor(floor, width, jobs, runs.empty());
     const std::string size = std::to_string(run.samples) + " samples " + std::to_string(width) + "x" +
                              std::to_string(width / 2) + " (builtin-floor:" + floor + "), " + std::to_string(run.tiles) +
                              " tiles, " + std::to_string(jobs) + " at a time";
@@ -129,6 +134,12 @@ void benchTiles(BenchTable& table, const std::vector<std::string>& floors, int w
     table.add({"tiled decimation: peak memory of one process", size,
                formatNumber(run.tilePeak, 2) + " GiB a tile",
                "plan " + formatNumber(run.planPeak, 2) + " GiB, stitch " + formatNumber(run.stitchPeak, 2) + " GiB"});
+    if (run.untiled.seconds > 0.0) {
+      table.add({"the same floor decimated whole (--tiles off)", std::to_string(run.samples) + " samples",
+                 formatNumber(run.untiled.seconds, 1) + " s", "peak " + formatNumber(run.untiled.peakGigabytes, 2) +
+                                                                  " GiB; tiled over untiled: " +
+                                                                  formatRatio(run.seconds(), run.untiled.seconds)});
+    }
     runs.push_back(run);
   }
   if (runs.size() >= 2) {

@@ -25,16 +25,6 @@ std::string tilesHelp() {
          "above " + std::to_string(2 * kTileCoreSamples) + " samples, where one decimation costs more than its tiles)";
 }
 
-CLI::Validator tileCountCheck() {
-  return CLI::Validator(
-      [](std::string& value) -> std::string {
-        if (value == "auto" || value == "off") return {};
-        const std::optional<int> count = parseTileCount(value);
-        return count ? std::string() : "must be auto, off or a number of tiles from 1 to 100000, got '" + value + "'";
-      },
-      "auto|off|N");
-}
-
 // The tiled decimation: its work folder beside the selection file, kept
 // until the selection is written, so a stopped run goes on from its tiles.
 void decimateTiled(const Dataset& dataset, const ResolvedSelection& resolved, int tiles, int jobs,
@@ -68,27 +58,23 @@ void registerDecimateCommand(CLI::App& app) {
     std::string tiles = "auto";
     int jobs = defaultJobs();
     bool quiet = false;
-    StoppingArguments stopping;
-    SelectionArguments selection;
-    ErrorArguments errors;
+    DecimationArguments decimation;
   };
   auto arguments = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand("decimate", "Select reference samples by edge-collapse decimation");
   command->add_option("--dataset", arguments->dataset, "Data set directory")->required();
   command->add_option("--out", arguments->out, "Selection file to write (selection.json)")->required()->check(writableFile());
-  addStoppingOptions(*command, arguments->stopping);
-  command->add_option("--tiles", arguments->tiles, tilesHelp())->capture_default_str()->check(tileCountCheck());
+  command->add_option("--tiles", arguments->tiles, tilesHelp())->capture_default_str()->check(tileCount());
   command->add_option("--jobs", arguments->jobs,
                       "Tiles decimated at once on this machine (default: the cores); under mpirun, one per rank")
       ->check(CLI::Range(1, 4096));
-  addSelectionOptions(*command, arguments->selection);
   command->add_flag("--quiet", arguments->quiet, "No progress output");
-  addErrorOptions(*command, arguments->errors, withSelectionDefaults(TriangleErrorSettings{}.synthesis));
+  addDecimationOptions(*command, arguments->decimation);
 
   command->callback([arguments] {
     const Arguments& a = *arguments;
     const Dataset dataset = Dataset::open(a.dataset);
-    const ResolvedSelection resolved = resolveSelection(a.selection, a.errors, a.stopping, dataset);
+    const ResolvedSelection resolved = resolveSelection(a.decimation, dataset);
     const int tiles = tileCountFor(a.tiles, dataset.sampleCount());
     if (tiles > 1) {
       decimateTiled(dataset, resolved, tiles, a.jobs, a.out, a.quiet);

@@ -23,9 +23,7 @@ void registerPlan(CLI::App& tiles) {
     std::string dataset, out, tiles = "auto";
     int jobs = defaultJobs();
     bool quiet = false;
-    StoppingArguments stopping;
-    SelectionArguments selection;
-    ErrorArguments errors;
+    DecimationArguments decimation;
   };
   auto arguments = std::make_shared<Arguments>();
   CLI::App* command = tiles.add_subcommand(
@@ -33,18 +31,16 @@ void registerPlan(CLI::App& tiles) {
   command->add_option("--dataset", arguments->dataset, "Data set directory (on a file system every job reads)")->required();
   command->add_option("--out", arguments->out, "Work folder for the plan and the tiles' outcomes")
       ->required()->check(writableDirectory());
-  addStoppingOptions(*command, arguments->stopping);
   command->add_option("--tiles", arguments->tiles,
                       "Number of tiles, or auto (one per " + std::to_string(kTileCoreSamples) + " samples)")
-      ->capture_default_str();
+      ->capture_default_str()->check(tileCount());
   command->add_option("--jobs", arguments->jobs, "Tiles measured at once (default: the cores)")->check(CLI::Range(1, 4096));
-  addSelectionOptions(*command, arguments->selection);
   command->add_flag("--quiet", arguments->quiet, "No progress output");
-  addErrorOptions(*command, arguments->errors, withSelectionDefaults(TriangleErrorSettings{}.synthesis));
+  addDecimationOptions(*command, arguments->decimation);
   command->callback([arguments] {
     const Arguments& a = *arguments;
     const Dataset dataset = Dataset::open(a.dataset);
-    const ResolvedSelection resolved = resolveSelection(a.selection, a.errors, a.stopping, dataset);
+    const ResolvedSelection resolved = resolveSelection(a.decimation, dataset);
     const int count = a.tiles == "auto" ? std::max(1, int(std::lround(double(dataset.sampleCount()) / kTileCoreSamples)))
                                         : tileCountFor(a.tiles, dataset.sampleCount());
     InterruptScope interruptScope;

@@ -169,4 +169,14 @@ ResolvedSelection resolveSelection(const SelectionArguments& selection, const Er
   return resolved;
 }
 
+void addDecimationOptions(CLI::App& command, DecimationArguments& arguments) {
+  addStoppingOptions(command, arguments.stopping);
+  addSelectionOptions(command, arguments.selection);
+  addErrorOptions(command, arguments.errors, withSelectionDefaults(TriangleErrorSettings{}.synthesis));
+}
+
+ResolvedSelection resolveSelection(const DecimationArguments& arguments, const Dataset& dataset) {
+  return resolveSelection(arguments.selection, arguments.errors, arguments.stopping, dataset);
+}
+
 }  // namespace triwalk

@@ -67,4 +67,13 @@ struct ResolvedSelection {
 ResolvedSelection resolveSelection(const SelectionArguments& selection, const ErrorArguments& errors,
                                    const StoppingArguments& stopping, const Dataset& dataset);
 
+// Every option of a decimation, as decimate and tiles plan take them.
+struct DecimationArguments {
+  StoppingArguments stopping;
+  SelectionArguments selection;
+  ErrorArguments errors;
+};
+void addDecimationOptions(CLI::App& command, DecimationArguments& arguments);
+ResolvedSelection resolveSelection(const DecimationArguments& arguments, const Dataset& dataset);
+
 }  // namespace triwalk

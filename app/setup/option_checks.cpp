@@ -1,5 +1,7 @@
 #include "app/setup/option_checks.h"
 
+#include "app/setup/tile_jobs.h"
+
 #include "core/support/errors.h"
 
 #include <unistd.h>
@@ -99,6 +101,15 @@ CLI::Validator writableFile() {
         return std::string();
       },
       "FILE");
+}
+
+CLI::Validator tileCount() {
+  return CLI::Validator(
+      [](std::string& value) -> std::string {
+        if (value == "auto" || value == "off" || parseTileCount(value)) return {};
+        return "must be auto, off or a number of tiles from 1 to 100000, got '" + value + "'";
+      },
+      "auto|off|N");
 }
 
 CLI::Validator writableDirectory() {

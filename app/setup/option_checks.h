@@ -25,6 +25,8 @@ CLI::Validator writableFile();
 // An output folder: it is a writable folder, or it can be created in the
 // nearest folder above it that exists.
 CLI::Validator writableDirectory();
+// --tiles: auto, off or a number of tiles (parseTileCount).
+CLI::Validator tileCount();
 
 // Hides the options that tune the method rather than use it (warp, blend
 // and error constants, the decimator's alternative rules) from --help;

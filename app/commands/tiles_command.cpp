@@ -41,8 +41,9 @@ void registerPlan(CLI::App& tiles) {
     const Arguments& a = *arguments;
     const Dataset dataset = Dataset::open(a.dataset);
     const ResolvedSelection resolved = resolveSelection(a.decimation, dataset);
-    const int count = a.tiles == "auto" ? std::max(1, int(std::lround(double(dataset.sampleCount()) / kTileCoreSamples)))
-                                        : tileCountFor(a.tiles, dataset.sampleCount());
+    // auto: one tile per kTileCoreSamples whatever the size (decimate's
+    // auto also decides whether to tile at all).
+    const int count = a.tiles == "auto" ? defaultTileCount(dataset.sampleCount()) : tileCountFor(a.tiles, dataset.sampleCount());
     InterruptScope interruptScope;
     const OutputLock lock(a.out);
     const TilePlanRequest request{describeSelectionSettings(resolved.selection, resolved.errors), count, a.jobs};
@@ -80,7 +81,7 @@ void registerRun(CLI::App& tiles) {
     }
     InterruptScope interruptScope;
     const TileOutcome outcome = runTile(dataset, plan, a.tile, tileLayerCacheBytes(1), a.quiet);
-    writeTileOutcome(a.plan, a.tile, outcome, dataset);
+    writeTileOutcome(a.plan, plan, a.tile, outcome, dataset);
     std::printf("tile %d of %zu: %zu samples, kept %zu references of its core in %.1f s; wrote %s\n", a.tile,
                 plan.tiles.size(), plan.tiles[size_t(a.tile)].samples.size(), outcome.references.size(), outcome.seconds,
                 tileOutcomeFile(a.plan, a.tile).c_str());

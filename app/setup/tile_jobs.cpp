@@ -21,11 +21,11 @@ namespace {
 
 // The tiles of the plan with no outcome for it in folder.
 std::vector<int> tilesToRun(const std::filesystem::path& folder, const Dataset& dataset, const TilePlan& plan) {
-  std::vector<int> todo;
+  std::vector<int> pending;
   for (int k = 0; k < int(plan.tiles.size()); ++k) {
-    if (!readTileOutcome(folder, k, plan, dataset)) todo.push_back(k);
+    if (!readTileOutcome(folder, k, plan, dataset)) pending.push_back(k);
   }
-  return todo;
+  return pending;
 }
 
 // The plan in folder if it was made for this request, else a new one.
@@ -51,11 +51,11 @@ TilePlan planOrResume(const Dataset& dataset, const TilePlanRequest& request, co
 // tiles it hands to the other ranks.
 class TileQueue {
 public:
-  explicit TileQueue(std::vector<int> todo) : todo_(std::move(todo)) {}
+  explicit TileQueue(std::vector<int> pending) : pending_(std::move(pending)) {}
   std::optional<int> take() {
     const std::lock_guard lock(mutex_);
-    if (next_ >= todo_.size() || !failed_.empty()) return std::nullopt;
-    return todo_[next_++];
+    if (next_ >= pending_.size() || !failed_.empty()) return std::nullopt;
+    return pending_[next_++];
   }
   void fail(int tile, int rank) {
     const std::lock_guard lock(mutex_);
@@ -69,7 +69,7 @@ public:
 
 private:
   std::mutex mutex_;
-  std::vector<int> todo_;
+  std::vector<int> pending_;
   size_t next_ = 0;
   std::vector<std::pair<int, int>> failed_;  // tile, rank
 };
@@ -79,14 +79,14 @@ private:
 // as it asks for one, until none is left or one failed. Messages: {tile
 // finished or -1, 1 if it failed}.
 void handOutTiles(const MpiWorld& world, const std::filesystem::path& folder, const Dataset& dataset,
-                  const TilePlan& plan, const std::vector<int>& todo, bool quiet) {
-  ProgressReporter progress("tiles, over " + std::to_string(world.size()) + " MPI ranks", todo.size(), quiet);
-  TileQueue queue(todo);
+                  const TilePlan& plan, const std::vector<int>& pending, bool quiet) {
+  ProgressReporter progress("tiles, over " + std::to_string(world.size()) + " MPI ranks", pending.size(), quiet);
+  TileQueue queue(pending);
   const size_t layerCacheBytes = tileLayerCacheBytes(world.localSize());
   std::thread local([&] {
     while (const std::optional<int> tile = queue.take()) {
       try {
-        writeTileOutcome(folder, *tile, runTile(dataset, plan, *tile, layerCacheBytes, true), dataset);
+        writeTileOutcome(folder, plan, *tile, runTile(dataset, plan, *tile, layerCacheBytes, true), dataset);
         progress.advance();
       } catch (const std::exception& error) {
         std::fprintf(stderr, "triwalk: MPI rank 0, tile %d: %s\n", *tile, error.what());
@@ -130,7 +130,7 @@ void runHandedTiles(const MpiWorld& world, const std::filesystem::path& folder, 
     const int tile = world.receiveFrom(0)[0];
     if (tile < 0) return;
     try {
-      writeTileOutcome(folder, tile, runTile(dataset, plan, tile, layerCacheBytes, true), dataset);
+      writeTileOutcome(folder, plan, tile, runTile(dataset, plan, tile, layerCacheBytes, true), dataset);
       report = {tile, 0};
     } catch (const std::exception& error) {
       std::fprintf(stderr, "triwalk: MPI rank %d, tile %d: %s\n", world.rank(), tile, error.what());
@@ -150,9 +150,7 @@ std::optional<int> parseTileCount(const std::string& value) {
 
 int tileCountFor(const std::string& tiles, int samples) {
   if (tiles == "off") return 1;
-  if (tiles == "auto") {
-    return samples > 2 * kTileCoreSamples ? int(std::lround(double(samples) / kTileCoreSamples)) : 1;
-  }
+  if (tiles == "auto") return samples > 2 * kTileCoreSamples ? defaultTileCount(samples) : 1;
   const std::optional<int> count = parseTileCount(tiles);
   if (!count) throw InputError("--tiles", "must be auto, off or a number of tiles, got '" + tiles + "'");
   return *count;
@@ -162,19 +160,19 @@ int defaultJobs() { return std::max(1, tbb::this_task_arena::max_concurrency());
 
 void runTilesHere(const std::filesystem::path& folder, const Dataset& dataset, const TilePlan& plan, int jobs,
                   bool quiet) {
-  const std::vector<int> todo = tilesToRun(folder, dataset, plan);
-  if (!quiet && todo.size() < plan.tiles.size()) {
-    std::printf("%zu of %zu tiles already run for this plan\n", plan.tiles.size() - todo.size(), plan.tiles.size());
+  const std::vector<int> pending = tilesToRun(folder, dataset, plan);
+  if (!quiet && pending.size() < plan.tiles.size()) {
+    std::printf("%zu of %zu tiles already run for this plan\n", plan.tiles.size() - pending.size(), plan.tiles.size());
   }
-  const int concurrent = std::max(1, std::min(jobs, int(todo.size())));
+  const int concurrent = std::max(1, std::min(jobs, int(pending.size())));
   const size_t layerCacheBytes = tileLayerCacheBytes(concurrent);
-  ProgressReporter progress("tiles, " + std::to_string(concurrent) + " at a time", todo.size(), quiet);
+  ProgressReporter progress("tiles, " + std::to_string(concurrent) + " at a time", pending.size(), quiet);
   // One tile per job; each tile's errors use the threads its job is given.
   tbb::task_arena arena(concurrent);
   arena.execute([&] {
-    tbb::parallel_for(size_t(0), todo.size(), size_t(1), [&](size_t i) {
+    tbb::parallel_for(size_t(0), pending.size(), size_t(1), [&](size_t i) {
       if (interruptRequested()) return;
-      writeTileOutcome(folder, todo[i], runTile(dataset, plan, todo[i], layerCacheBytes, true), dataset);
+      writeTileOutcome(folder, plan, pending[i], runTile(dataset, plan, pending[i], layerCacheBytes, true), dataset);
       progress.advance();
     });
   });
@@ -207,8 +205,8 @@ std::optional<StitchResult> decimateInTiles(const Dataset& dataset, const TilePl
     throw;
   }
   world.broadcast(0);
-  const std::vector<int> todo = tilesToRun(folder, dataset, *plan);
-  handOutTiles(world, folder, dataset, *plan, todo, quiet);
+  const std::vector<int> pending = tilesToRun(folder, dataset, *plan);
+  handOutTiles(world, folder, dataset, *plan, pending, quiet);
   return stitchTiles(dataset, *plan, readTileOutcomes(folder, *plan, dataset), tileLayerCacheBytes(1), quiet);
 }
 

@@ -103,6 +103,7 @@ TilePlan readTilePlan(const std::filesystem::path& folder, const Dataset& datase
   const nlohmann::json document = readJsonFile(file);
   const JsonObject root = planRoot(document, file);
   TilePlan plan;
+  plan.key = planKey(folder);
   const JsonObject source = root.object("dataset");
   plan.datasetDirectory = source.string("directory");
   plan.datasetSamples = source.integer("samples");
@@ -154,9 +155,11 @@ std::filesystem::path tileOutcomeFile(const std::filesystem::path& folder, int t
   return folder / name;
 }
 
-void writeTileOutcome(const std::filesystem::path& folder, int tile, const TileOutcome& outcome, const Dataset& dataset) {
+void writeTileOutcome(const std::filesystem::path& folder, const TilePlan& plan, int tile, const TileOutcome& outcome,
+                      const Dataset& dataset) {
+  TRIWALK_CHECK(!plan.key.empty(), "a tile's outcome names a plan read from its folder");
   const nlohmann::json document = {{"format", "triwalk-tile"},     {"version", kTilePlanVersion},
-                                   {"plan", planKey(folder)},       {"tile", tile},
+                                   {"plan", plan.key},       {"tile", tile},
                                    {"references", idsOf(outcome.references, dataset)},
                                    {"collapses", outcome.collapses}, {"moves", outcome.moves},
                                    {"seconds", outcome.seconds}};
@@ -170,7 +173,7 @@ std::optional<TileOutcome> readTileOutcome(const std::filesystem::path& folder, 
   const nlohmann::json document = readJsonFile(file);
   const JsonObject root(document, file.string());
   if (root.stringOr("format", "") != "triwalk-tile") root.fail("not a triwalk tile (format field)");
-  if (root.string("plan") != planKey(folder)) return std::nullopt;
+  if (root.string("plan") != plan.key) return std::nullopt;
   if (root.integer("tile") != tile) root.fail("holds tile " + std::to_string(root.integer("tile")));
   TileOutcome outcome;
   outcome.references = IdReader(dataset).indices(root, "references");

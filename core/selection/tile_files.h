@@ -34,10 +34,11 @@ TilePlan readTilePlan(const std::filesystem::path& folder, const Dataset& datase
 
 std::filesystem::path tileOutcomeFile(const std::filesystem::path& folder, int tile);
 
-// Writes tile_K.json atomically, naming the plan in folder.
-void writeTileOutcome(const std::filesystem::path& folder, int tile, const TileOutcome& outcome, const Dataset& dataset);
+// Writes tile_K.json atomically, naming the plan (read from folder).
+void writeTileOutcome(const std::filesystem::path& folder, const TilePlan& plan, int tile, const TileOutcome& outcome,
+                      const Dataset& dataset);
 
-// Tile K's outcome if its file exists and was made for the plan in folder
+// Tile K's outcome if its file exists and was made for the plan (read from folder)
 // (a file made for another plan counts as missing); InputError naming a
 // corrupt one.
 std::optional<TileOutcome> readTileOutcome(const std::filesystem::path& folder, int tile, const TilePlan& plan,

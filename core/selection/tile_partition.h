@@ -34,7 +34,7 @@ std::vector<TileCore> splitIntoCores(std::span<const glm::dvec2> positions, int 
 // Each core with the samples within `margin` metres of its rectangle.
 std::vector<Tile> tilesWithMargin(std::span<const glm::dvec2> positions, std::vector<TileCore> cores, double margin);
 
-// The samples within `distance` of a core's border inside it: the band a
+// The samples within `distance` of a core's border inside it (sorted): the band a
 // seam pass may change.
 std::vector<int> bandMembers(std::span<const glm::dvec2> positions, const TileCore& core, double distance,
                              const std::vector<TileCore>& cores);

@@ -21,6 +21,8 @@ namespace triwalk {
 // fixed width) would be most of every tile's work.
 const int kTileCoreSamples = 600;
 
+int defaultTileCount(int samples) { return std::max(1, int(std::lround(double(samples) / kTileCoreSamples))); }
+
 namespace {
 
 // The margin and the seam band in refinement radii (neighbourhoodRadius:
@@ -55,11 +57,7 @@ std::vector<double> restricted(const std::vector<double>& values, std::span<cons
   return result;
 }
 
-std::vector<char> membership(size_t count, std::span<const int> members) {
-  std::vector<char> is(count, 0);
-  for (int i : members) is[size_t(i)] = 1;
-  return is;
-}
+bool isAmong(std::span<const int> sorted, int sample) { return std::binary_search(sorted.begin(), sorted.end(), sample); }
 
 // Sum and count of the dense triangle errors a tile owns: the triangles of
 // its dense triangulation whose lowest sample is a member of its core, so
@@ -69,11 +67,10 @@ std::pair<double, size_t> measureTile(const Dataset& dataset, const Tile& tile, 
   errorSettings.layerCacheBytes = 0;  // each triangle is measured once
   DatasetTriangleErrors errors(part, errorSettings, LoadedViews::Samples, true);
   const ViewMesh dense = datasetMesh(part, {}, dataset.manifestPath().string());
-  const std::vector<char> member = membership(size_t(dataset.sampleCount()), tile.core.members);
   std::vector<Triangle> owned;
   for (const Triangle& t : dense.triangles()) {
     const int lowest = tile.samples[size_t(*std::min_element(t.begin(), t.end()))];
-    if (member[size_t(lowest)]) owned.push_back(t);
+    if (isAmong(tile.core.members, lowest)) owned.push_back(t);
   }
   std::vector<double> values(owned.size());
   errors.computeErrors(owned, values);
@@ -99,8 +96,7 @@ TilePlan planTiles(const Dataset& dataset, const TilePlanRequest& request, bool 
   plan.settings = request.settings;
   plan.request = {{"settings", request.settings}, {"tiles", request.tiles}};
   const std::vector<glm::dvec2> positions = samplePositions(dataset);
-  const int count = request.tiles > 0 ? request.tiles
-                                      : std::max(1, int(std::lround(double(positions.size()) / kTileCoreSamples)));
+  const int count = request.tiles > 0 ? request.tiles : defaultTileCount(int(positions.size()));
   std::vector<TileCore> cores = splitIntoCores(positions, count);
 
   // The sample spacing, as the refinement measures it, from each core alone
@@ -170,10 +166,9 @@ TileOutcome runTile(const Dataset& dataset, const TilePlan& plan, int k, size_t 
   const SelectionRun run = selectReferences(part, errors, selection, quiet);
 
   TileOutcome outcome;
-  const std::vector<char> member = membership(size_t(dataset.sampleCount()), tile.core.members);
   for (int local : run.selection.samples) {
     const int sample = tile.samples[size_t(local)];
-    if (member[size_t(sample)]) outcome.references.push_back(sample);
+    if (isAmong(tile.core.members, sample)) outcome.references.push_back(sample);
   }
   std::sort(outcome.references.begin(), outcome.references.end());
   outcome.collapses = run.collapses;
@@ -213,13 +208,12 @@ StitchResult stitchTiles(const Dataset& dataset, const TilePlan& plan, const std
   for (size_t k = 0; k < plan.tiles.size(); ++k) {
     throwIfInterrupted();
     const Tile& tile = plan.tiles[k];
-    const std::vector<char> inBand = membership(positions.size(), bands[k]);
     std::vector<int> localReferences;
     std::vector<char> frozen(tile.samples.size(), 1);
     size_t freeReferences = 0;
     for (size_t local = 0; local < tile.samples.size(); ++local) {
       const int sample = tile.samples[local];
-      if (inBand[size_t(sample)]) frozen[local] = 0;
+      if (isAmong(bands[k], sample)) frozen[local] = 0;
       if (isReference[size_t(sample)]) {
         localReferences.push_back(int(local));
         if (!frozen[local]) ++freeReferences;

@@ -24,12 +24,17 @@ namespace triwalk {
 // Above this many samples, decimate tiles by itself; cores hold about this
 // many samples each (see the definition for the measurement).
 extern const int kTileCoreSamples;
+// One tile per kTileCoreSamples samples (at least one).
+int defaultTileCount(int samples);
 
 // What every tile runs with, resolved once for the whole capture.
 struct TilePlan {
   // What was asked ({"settings": ..., "tiles": N}): a rerun asking the same
   // finds the plan and the tiles already run, and goes on from there.
   nlohmann::json request;
+  // A hash of plan.json as read (readTilePlan): each tile's outcome names
+  // the plan it was made for.
+  std::string key;
   std::string datasetDirectory;  // absolute
   int datasetSamples = 0;
   // The selection file's settings (describeSelectionSettings), with the
@@ -54,7 +59,7 @@ struct TileOutcome {
 
 struct TilePlanRequest {
   nlohmann::json settings;  // describeSelectionSettings of the request (max_error, relative_error, target)
-  int tiles = 0;            // 0: one per kTileCoreSamples samples
+  int tiles = 0;            // 0: defaultTileCount
   int jobs = 1;             // tiles measured at once
 };
 

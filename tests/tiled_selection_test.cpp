@@ -40,7 +40,7 @@ private:
 
 TEST_CASE("cores: median splits into equal counts across the longer side, every sample in one core, none on a border") {
   const std::vector<glm::dvec2> positions = testing::unitGrid(16, 4);  // 64 samples, 15 m x 3 m
-  const std::vector<TileCore> cores = splitIntoCores(positions, 4);
+  const std::vector<TileCore> cores = splitIntoCores(positions, 0.0, {.count = 4});
   REQUIRE(cores.size() == 4);
   std::vector<int> seen;
   for (const TileCore& core : cores) {
@@ -67,19 +67,41 @@ TEST_CASE("cores: median splits into equal counts across the longer side, every 
   CHECK(cores[2].upper.x == doctest::Approx(11.5));
 
   // Three cores: the crowded half is split again, the other kept whole.
-  const std::vector<TileCore> three = splitIntoCores(positions, 3);
+  const std::vector<TileCore> three = splitIntoCores(positions, 0.0, {.count = 3});
   REQUIRE(three.size() == 3);
   CHECK(three[0].members.size() == 16);
   CHECK(three[1].members.size() == 16);
   CHECK(three[2].members.size() == 32);
   // Samples that all share a position cannot be split: one core, not a loop.
   const std::vector<glm::dvec2> stacked(5, glm::dvec2(1.0, 1.0));
-  CHECK(splitIntoCores(stacked, 4).size() == 1);
+  CHECK(splitIntoCores(stacked, 0.0, {.count = 4}).size() == 1);
+  CHECK(splitIntoCores(stacked, 0.0, {.mostTileSamples = 2}).size() == 1);
+}
+
+TEST_CASE("cores with a bound: the largest tile, margin included, is split until every tile holds at most the bound") {
+  const std::vector<glm::dvec2> positions = testing::unitGrid(16, 4);  // columns x = 0..15, 4 samples each
+  auto tileSizes = [&](const std::vector<TileCore>& cores) {
+    std::vector<size_t> sizes;
+    for (const Tile& tile : tilesWithMargin(positions, cores, 1.0)) sizes.push_back(tile.samples.size());
+    return sizes;
+  };
+  // 1 m of margin: a core of 4 columns inside the capture makes a tile of 6
+  // (24 samples), at an end of 5. Halves (36 each), then the first half
+  // (20, 24), then the second (24, 20): every tile within 24, four cores.
+  const std::vector<TileCore> within24 = splitIntoCores(positions, 1.0, {.mostTileSamples = 24});
+  CHECK(tileSizes(within24) == std::vector<size_t>{20, 24, 24, 20});
+  // Within 23: the inner tiles of 24 are split again (a core of 2 columns
+  // inside makes a tile of 4), the end ones of 20 are not.
+  const std::vector<TileCore> within23 = splitIntoCores(positions, 1.0, {.mostTileSamples = 23});
+  CHECK(tileSizes(within23) == std::vector<size_t>{20, 16, 16, 16, 16, 20});
+  // Without margins the bound is the core's own count.
+  CHECK(splitIntoCores(positions, 0.0, {.mostTileSamples = 16}).size() == 4);
+  CHECK(splitIntoCores(positions, 0.0, {.mostTileSamples = 64}).size() == 1);
 }
 
 TEST_CASE("a tile holds its core and the samples within the margin of it, and the band is the core's samples near another core") {
   const std::vector<glm::dvec2> positions = testing::unitGrid(16, 4);
-  const std::vector<TileCore> cores = splitIntoCores(positions, 4);
+  const std::vector<TileCore> cores = splitIntoCores(positions, 0.0, {.count = 4});
   const std::vector<Tile> tiles = tilesWithMargin(positions, cores, 1.0);
   REQUIRE(tiles.size() == 4);
   // Core 1 holds columns 4-7 (border at 3.5 and 7.5): within 1 m, columns 3 and 8 too.

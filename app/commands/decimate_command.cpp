@@ -20,9 +20,9 @@ namespace triwalk {
 namespace {
 
 std::string tilesHelp() {
-  return "Decimate in tiles of about " + std::to_string(kTileCoreSamples) +
-         " samples each, stitched (docs/DESIGN.md, \"Tiled selection\"): a number of tiles, off, or auto (tiles "
-         "above " + std::to_string(2 * kTileCoreSamples) + " samples; at 1,584 the tiles took a third of one decimation's time, docs/BENCHMARKS.md)";
+  return "Decimate in tiles, stitched (docs/DESIGN.md, \"Tiled selection\"): a number of tiles, off, or auto (above " +
+         std::to_string(kTileSamples) + " samples, tiles of at most " + std::to_string(kTileSamples) +
+         " with their margins; at 1,584 the tiles took a third of one decimation's time, docs/BENCHMARKS.md)";
 }
 
 // The tiled decimation: its work folder beside the selection file, kept
@@ -30,19 +30,18 @@ std::string tilesHelp() {
 void decimateTiled(const Dataset& dataset, const ResolvedSelection& resolved, int tiles, int jobs,
                    const std::string& out, bool quiet) {
   const bool worker = rankFromEnvironment() != 0;  // an MPI rank other than 0 only runs tiles
-  if (!worker) std::printf("%s; in %d tiles\n", describeErrorSettings(resolved.errors).c_str(), tiles);
+  if (!worker) std::printf("%s; in tiles\n", describeErrorSettings(resolved.errors).c_str());
   InterruptScope interruptScope;
   const std::filesystem::path folder = std::filesystem::path(out).concat(".tiles");
   TilePlanRequest request{describeSelectionSettings(resolved.selection, resolved.errors), tiles, jobs};
   std::optional<StitchResult> stitched = decimateInTiles(dataset, request, folder, quiet || worker);
   if (!stitched) return;
-  stitched->selection.settings["tiles"] = tiles;
   writeSelection(out, stitched->selection, dataset);
   std::filesystem::remove_all(folder);
-  std::printf("kept %zu of %d samples, %zu triangles: the tiles' cores kept %zu, the seam pass made %zu collapses "
-              "and %zu moves\n",
+  std::printf("kept %zu of %d samples, %zu triangles: the %zu tiles' cores kept %zu, the seam pass made %zu "
+              "collapses and %zu moves\n",
               stitched->selection.samples.size(), dataset.sampleCount(), stitched->selection.triangles.size(),
-              stitched->unionSamples, stitched->seamCollapses, stitched->seamMoves);
+              stitched->tiles, stitched->unionSamples, stitched->seamCollapses, stitched->seamMoves);
   if (const std::string outside = describeSamplesOutsideTriangles(dataset, selectionMesh(stitched->selection, dataset));
       !outside.empty()) {
     std::printf("%s\n", outside.c_str());
@@ -76,7 +75,7 @@ void registerDecimateCommand(CLI::App& app) {
     const Dataset dataset = Dataset::open(a.dataset);
     const ResolvedSelection resolved = resolveSelection(a.decimation, dataset);
     const int tiles = tileCountFor(a.tiles, dataset.sampleCount());
-    if (tiles > 1) {
+    if (tiles != 1) {
       decimateTiled(dataset, resolved, tiles, a.jobs, a.out, a.quiet);
       return;
     }

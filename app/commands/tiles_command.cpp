@@ -32,7 +32,8 @@ void registerPlan(CLI::App& tiles) {
   command->add_option("--out", arguments->out, "Work folder for the plan and the tiles' outcomes")
       ->required()->check(writableDirectory());
   command->add_option("--tiles", arguments->tiles,
-                      "Number of tiles, or auto (one per " + std::to_string(kTileCoreSamples) + " samples)")
+                      "Number of tiles, or auto (tiles of at most " + std::to_string(kTileSamples) +
+                          " samples with their margins)")
       ->capture_default_str()->check(tileCount());
   command->add_option("--jobs", arguments->jobs, "Tiles measured at once (default: the cores)")->check(CLI::Range(1, 4096));
   command->add_flag("--quiet", arguments->quiet, "No progress output");
@@ -41,9 +42,9 @@ void registerPlan(CLI::App& tiles) {
     const Arguments& a = *arguments;
     const Dataset dataset = Dataset::open(a.dataset);
     const ResolvedSelection resolved = resolveSelection(a.decimation, dataset);
-    // auto: one tile per kTileCoreSamples whatever the size (decimate's
+    // auto: tiles within kTileSamples whatever the capture's size (decimate's
     // auto also decides whether to tile at all).
-    const int count = a.tiles == "auto" ? defaultTileCount(dataset.sampleCount()) : tileCountFor(a.tiles, dataset.sampleCount());
+    const int count = a.tiles == "auto" ? 0 : tileCountFor(a.tiles, dataset.sampleCount());
     InterruptScope interruptScope;
     const OutputLock lock(a.out);
     const TilePlanRequest request{describeSelectionSettings(resolved.selection, resolved.errors), count, a.jobs};
@@ -105,7 +106,6 @@ void registerStitch(CLI::App& tiles) {
     const std::vector<TileOutcome> outcomes = readTileOutcomes(a.plan, plan, dataset);
     InterruptScope interruptScope;
     StitchResult stitched = stitchTiles(dataset, plan, outcomes, tileLayerCacheBytes(1), a.quiet);
-    stitched.selection.settings["tiles"] = plan.request.value("tiles", int(plan.tiles.size()));
     writeSelection(a.out, stitched.selection, dataset);
     std::printf("kept %zu of %d samples (the cores kept %zu; seam pass: %zu collapses, %zu moves); wrote %s\n",
                 stitched.selection.samples.size(), dataset.sampleCount(), stitched.unionSamples, stitched.seamCollapses,

@@ -150,7 +150,7 @@ std::optional<int> parseTileCount(const std::string& value) {
 
 int tileCountFor(const std::string& tiles, int samples) {
   if (tiles == "off") return 1;
-  if (tiles == "auto") return samples > 2 * kTileCoreSamples ? defaultTileCount(samples) : 1;
+  if (tiles == "auto") return size_t(samples) > kTileSamples ? 0 : 1;
   const std::optional<int> count = parseTileCount(tiles);
   if (!count) throw InputError("--tiles", "must be auto, off or a number of tiles, got '" + tiles + "'");
   return *count;

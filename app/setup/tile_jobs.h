@@ -16,8 +16,9 @@ namespace triwalk {
 
 // --tiles: a count from 1 to 100000, or nothing.
 std::optional<int> parseTileCount(const std::string& value);
-// The tiles for --tiles auto|off|N on a data set: auto tiles above twice
-// kTileCoreSamples, one tile per kTileCoreSamples.
+// The tiles for --tiles auto|off|N on a data set, as TilePlanRequest::tiles
+// counts them: 1 untiled (off, or auto up to kTileSamples samples), 0 as
+// many as keep each tile within kTileSamples (auto above it), or N.
 int tileCountFor(const std::string& tiles, int samples);
 // --jobs by default: this machine's cores.
 int defaultJobs();

@@ -38,10 +38,43 @@ bool splitAcross(std::span<const glm::dvec2> positions, const TileCore& core, in
   return true;
 }
 
+// The samples ordered along x: those near a rectangle are found among the
+// ones in its x range, not by visiting the whole capture for every tile.
+class SamplesAlongX {
+public:
+  explicit SamplesAlongX(std::span<const glm::dvec2> positions) : positions_(positions), order_(positions.size()) {
+    for (size_t i = 0; i < order_.size(); ++i) order_[i] = int(i);
+    std::sort(order_.begin(), order_.end(), [&](int a, int b) {
+      return std::pair(positions[size_t(a)].x, a) < std::pair(positions[size_t(b)].x, b);
+    });
+  }
+
+  // Calls visit(i) for each sample within `distance` of the rectangle, in no set order.
+  template <class Visit>
+  void forEachNear(glm::dvec2 lower, glm::dvec2 upper, double distance, Visit visit) const {
+    auto first = std::partition_point(order_.begin(), order_.end(),
+                                      [&](int i) { return positions_[size_t(i)].x < lower.x - distance; });
+    for (auto at = first; at != order_.end() && positions_[size_t(*at)].x <= upper.x + distance; ++at) {
+      if (distanceToRectangle(positions_[size_t(*at)], lower, upper) <= distance) visit(*at);
+    }
+  }
+
+  size_t countNear(const TileCore& core, double distance) const {
+    size_t count = 0;
+    forEachNear(core.lower, core.upper, distance, [&](int) { ++count; });
+    return count;
+  }
+
+private:
+  std::span<const glm::dvec2> positions_;
+  std::vector<int> order_;
+};
+
 }  // namespace
 
-std::vector<TileCore> splitIntoCores(std::span<const glm::dvec2> positions, int count) {
-  TRIWALK_CHECK(!positions.empty() && count >= 1, "tiles need samples");
+std::vector<TileCore> splitIntoCores(std::span<const glm::dvec2> positions, double margin, CoreSplitStop stop) {
+  TRIWALK_CHECK(!positions.empty() && (stop.count >= 1 || stop.mostTileSamples >= 1), "tiles need samples and a stop");
+  const SamplesAlongX alongX(positions);
   TileCore all;
   all.lower = glm::dvec2(std::numeric_limits<double>::max());
   all.upper = glm::dvec2(std::numeric_limits<double>::lowest());
@@ -51,37 +84,45 @@ std::vector<TileCore> splitIntoCores(std::span<const glm::dvec2> positions, int 
     all.members.push_back(int(i));
   }
   std::vector<TileCore> cores = {std::move(all)};
+  std::vector<size_t> tileSamples = {positions.size()};
   std::vector<char> unsplittable(1, 0);
-  while (int(cores.size()) < count) {
-    size_t crowded = cores.size();
+  // With a bound, only a tile above it is split.
+  auto splittable = [&](size_t k) {
+    return !unsplittable[k] && (stop.count > 0 || tileSamples[k] > stop.mostTileSamples);
+  };
+  while (stop.count == 0 || int(cores.size()) < stop.count) {
+    size_t largest = cores.size();
     for (size_t k = 0; k < cores.size(); ++k) {
-      if (unsplittable[k]) continue;
-      if (crowded == cores.size() || cores[k].members.size() > cores[crowded].members.size()) crowded = k;
+      if (!splittable(k)) continue;
+      if (largest == cores.size() || tileSamples[k] > tileSamples[largest]) largest = k;
     }
-    if (crowded == cores.size()) break;
-    const glm::dvec2 extent = cores[crowded].upper - cores[crowded].lower;
+    if (largest == cores.size()) break;
+    const glm::dvec2 extent = cores[largest].upper - cores[largest].lower;
     const int longer = extent.x >= extent.y ? 0 : 1;
     TileCore low, high;
-    if (!splitAcross(positions, cores[crowded], longer, low, high) &&
-        !splitAcross(positions, cores[crowded], 1 - longer, low, high)) {
-      unsplittable[crowded] = 1;
+    if (!splitAcross(positions, cores[largest], longer, low, high) &&
+        !splitAcross(positions, cores[largest], 1 - longer, low, high)) {
+      unsplittable[largest] = 1;
       continue;
     }
-    cores[crowded] = std::move(low);
-    cores.insert(cores.begin() + std::ptrdiff_t(crowded) + 1, std::move(high));
-    unsplittable.insert(unsplittable.begin() + std::ptrdiff_t(crowded) + 1, 0);
+    const auto after = std::ptrdiff_t(largest) + 1;
+    tileSamples[largest] = alongX.countNear(low, margin);
+    tileSamples.insert(tileSamples.begin() + after, alongX.countNear(high, margin));
+    cores[largest] = std::move(low);
+    cores.insert(cores.begin() + after, std::move(high));
+    unsplittable.insert(unsplittable.begin() + after, 0);
   }
   return cores;
 }
 
 std::vector<Tile> tilesWithMargin(std::span<const glm::dvec2> positions, std::vector<TileCore> cores, double margin) {
+  const SamplesAlongX alongX(positions);
   std::vector<Tile> tiles;
   tiles.reserve(cores.size());
   for (TileCore& core : cores) {
     Tile tile;
-    for (size_t i = 0; i < positions.size(); ++i) {
-      if (distanceToRectangle(positions[i], core.lower, core.upper) <= margin) tile.samples.push_back(int(i));
-    }
+    alongX.forEachNear(core.lower, core.upper, margin, [&](int i) { tile.samples.push_back(i); });
+    std::sort(tile.samples.begin(), tile.samples.end());
     tile.core = std::move(core);
     tiles.push_back(std::move(tile));
   }

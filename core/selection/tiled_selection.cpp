@@ -15,13 +15,16 @@
 
 namespace triwalk {
 
-// Cores of about 600 samples: a tile with its margin holds about 1,100 at
-// the built-in capture's spacing, which the untiled decimation handles in
-// a few minutes and well under 4 GiB, while below it the margins (a
-// fixed width) would be most of every tile's work.
-const int kTileCoreSamples = 600;
-
-int defaultTileCount(int samples) { return std::max(1, int(std::lround(double(samples) / kTileCoreSamples))); }
+// Tiles of at most 1,000 samples, core and margin. A tile's refinement
+// costs more than linearly in its samples (each exchange searches all its
+// references and free samples, and larger tiles make more exchanges): with
+// cores of 600, the tiles of a 5,744-sample floor (up to 1,198 samples
+// with margins on four sides) took 3.4x as long each as those of a
+// 1,584-sample floor (up to 902). Bounding the tile, not the core, makes
+// every tile of every capture cost about the same, so the total grows with
+// the tile count, linearly in the capture. Much smaller tiles would be
+// mostly margin (a fixed width in sample spacings) and seams.
+const size_t kTileSamples = 1000;
 
 namespace {
 
@@ -96,31 +99,38 @@ TilePlan planTiles(const Dataset& dataset, const TilePlanRequest& request, bool 
   plan.settings = request.settings;
   plan.request = {{"settings", request.settings}, {"tiles", request.tiles}};
   const std::vector<glm::dvec2> positions = samplePositions(dataset);
-  const int count = request.tiles > 0 ? request.tiles : defaultTileCount(int(positions.size()));
-  std::vector<TileCore> cores = splitIntoCores(positions, count);
 
-  // The sample spacing, as the refinement measures it, from each core alone
-  // (the whole capture's would cost n^2) and the median taken.
-  std::vector<double> radii(cores.size());
-  tbb::parallel_for(size_t(0), cores.size(), [&](size_t k) {
+  // The sample spacing, as the refinement measures it, from parts of the
+  // capture of a tile's size (the whole capture's would cost n^2), the
+  // median taken; the same whatever the tile count asked for.
+  const std::vector<TileCore> parts = splitIntoCores(positions, 0.0, {.mostTileSamples = kTileSamples});
+  std::vector<double> radii(parts.size());
+  tbb::parallel_for(size_t(0), parts.size(), [&](size_t k) {
     std::vector<glm::dvec2> members;
-    for (int i : cores[k].members) members.push_back(positions[size_t(i)]);
+    for (int i : parts[k].members) members.push_back(positions[size_t(i)]);
     radii[k] = neighbourhoodRadius(members);
   });
-  std::vector<double> sorted = radii;
-  std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
-  const double radius = sorted[sorted.size() / 2];
+  std::nth_element(radii.begin(), radii.begin() + std::ptrdiff_t(radii.size() / 2), radii.end());
+  const double radius = radii[radii.size() / 2];
   plan.margin = kMarginRadii * radius;
   plan.band = kBandRadii * radius;
-  plan.tiles = tilesWithMargin(positions, std::move(cores), plan.margin);
+  const CoreSplitStop stop = request.tiles > 0 ? CoreSplitStop{.count = request.tiles}
+                                                 : CoreSplitStop{.mostTileSamples = kTileSamples};
+  plan.tiles = tilesWithMargin(positions, splitIntoCores(positions, plan.margin, stop), plan.margin);
 
   const JsonObject settings(plan.settings, "tile plan", "settings");
   if (!readRefinementOptions(settings).radius) plan.settings["refine_radius"] = radius;
   plan.target = settings.integerOr("target", 0);
   if (plan.target > 0) {
+    // Each tile its share of the samples and 5% more: the references
+    // gather where the errors are, so a core's share of its tile's
+    // references varies by a few percent around its share of the samples,
+    // and the seam pass can take out references, never add them. On the
+    // 1,940-sample floor, the shares alone left the cores 2 short of 256.
+    constexpr double kTargetSurplus = 1.05;
     for (const Tile& tile : plan.tiles) {
       const double share = double(plan.target) * double(tile.samples.size()) / double(positions.size());
-      plan.tileTargets.push_back(std::max(3, int(std::ceil(share))));
+      plan.tileTargets.push_back(std::max(3, int(std::ceil(kTargetSurplus * share))));
     }
   }
 
@@ -160,6 +170,17 @@ TileOutcome runTile(const Dataset& dataset, const TilePlan& plan, int k, size_t 
   // The whole capture's area shares: a sample at the margin's outer edge
   // stands for its own share, not for everything beyond the tile.
   selection.decimation.sampleWeights = restricted(selectionSampleWeights(dataset), tile.samples);
+  // The refinement moves only the core's references, among the core's
+  // samples: the margin's references are dropped after this run, so moving
+  // them would cost about as much again as the core (more than the core in
+  // a tile inside the capture, margin on four sides) and change nothing
+  // kept. They stay where the collapses left them, as the context the
+  // core's references near the border are judged with; the seam pass
+  // settles the border.
+  selection.refinement.frozen.resize(tile.samples.size());
+  for (size_t local = 0; local < tile.samples.size(); ++local) {
+    selection.refinement.frozen[local] = isAmong(tile.core.members, tile.samples[local]) ? 0 : 1;
+  }
 
   const Dataset part = dataset.withSamples(tile.samples);
   DatasetTriangleErrors errors(part, settings.errors, LoadedViews::Samples, quiet);
@@ -276,11 +297,13 @@ StitchResult stitchTiles(const Dataset& dataset, const TilePlan& plan, const std
     if (isReference[i]) references.push_back(int(i));
   }
   const ViewMesh final = datasetMesh(dataset, references, dataset.manifestPath().string());
+  result.tiles = plan.tiles.size();
   Selection& selection = result.selection;
   selection.method = "tiled_edge_collapse";
   selection.samples = references;
   selection.triangles = final.triangles();
   selection.settings = plan.settings;
+  selection.settings["tiles"] = plan.tiles.size();
   selection.stopReason = stopReasonName(plan.target > 0 ? StopReason::TargetReached : StopReason::MaxError);
   selection.nextCost = std::numeric_limits<double>::infinity();
   return result;

@@ -21,11 +21,9 @@
 
 namespace triwalk {
 
-// Above this many samples, decimate tiles by itself; cores hold about this
-// many samples each (see the definition for the measurement).
-extern const int kTileCoreSamples;
-// One tile per kTileCoreSamples samples (at least one).
-int defaultTileCount(int samples);
+// Automatic tiles hold at most this many samples, core and margin, and
+// decimate tiles by itself above it (see the definition for the measurement).
+extern const size_t kTileSamples;
 
 // What every tile runs with, resolved once for the whole capture.
 struct TilePlan {
@@ -59,7 +57,7 @@ struct TileOutcome {
 
 struct TilePlanRequest {
   nlohmann::json settings;  // describeSelectionSettings of the request (max_error, relative_error, target)
-  int tiles = 0;            // 0: defaultTileCount
+  int tiles = 0;            // 0: as many as keep every tile within kTileSamples
   int jobs = 1;             // tiles measured at once
 };
 
@@ -74,6 +72,7 @@ TileOutcome runTile(const Dataset& dataset, const TilePlan& plan, int k, size_t 
 
 struct StitchResult {
   Selection selection;  // method "tiled_edge_collapse", settings the plan's
+  size_t tiles = 0;
   size_t unionSamples = 0;  // references of the cores before the seam pass
   size_t seamCollapses = 0, seamMoves = 0;
 };

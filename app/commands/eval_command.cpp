@@ -10,6 +10,8 @@
 #include "core/selection/baselines.h"
 #include "core/selection/evaluation.h"
 #include "core/selection/selection.h"
+#include "core/selection/tiled_evaluation.h"
+#include "core/selection/tiled_selection.h"
 #include "core/selection/walking_distances.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
@@ -17,6 +19,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <functional>
+#include <memory>
 #include <optional>
 
 namespace triwalk {
@@ -145,7 +148,12 @@ void registerEvalCommand(CLI::App& app) {
     checkCounts(dataset, selection, a.counts);
     const TriangleErrorSettings settings = triangleErrorSettings(a.errors, dataset);
     InterruptScope interruptScope;
-    DatasetTriangleErrors errors(dataset, settings, LoadedViews::SamplesAndProbes, a.quiet);
+    // A capture larger than a tile is judged tile by tile, never holding
+    // every view; heat maps and --counts draw on any view at any time and
+    // read them all.
+    const bool byTiles = size_t(dataset.sampleCount()) > kTileSamples && a.heatmaps.empty() && a.counts.empty();
+    std::unique_ptr<DatasetTriangleErrors> errors;
+    if (!byTiles) errors = std::make_unique<DatasetTriangleErrors>(dataset, settings, LoadedViews::SamplesAndProbes, a.quiet);
 
     const std::vector<glm::dvec2> positions = samplePositions(dataset);
     const int count = int(selection.samples.size());
@@ -175,15 +183,21 @@ void registerEvalCommand(CLI::App& app) {
 
     std::vector<MethodEvaluation> evaluations;
     std::vector<UncoveredPositions> outside;  // the samples a walker finds outside every triangle, by row
-    ProgressReporter progress("evaluate", rows.size(), a.quiet);
-    for (const Row& row : rows) {
-      throwIfInterrupted();
-      evaluations.push_back(evaluateMesh(row.method, row.mesh, errors));
-      outside.push_back(uncoveredPositions(row.mesh, positions));
-      if (!a.heatmaps.empty()) writeHeatmaps(a.heatmaps, evaluations.back(), row.mesh, errors);
-      progress.advance();
+    for (const Row& row : rows) outside.push_back(uncoveredPositions(row.mesh, positions));
+    if (byTiles) {
+      std::vector<NamedMesh> meshes;
+      for (const Row& row : rows) meshes.push_back({row.method, &row.mesh});
+      evaluations = evaluateMeshesInTiles(dataset, meshes, settings, kTileSamples, a.quiet);
+    } else {
+      ProgressReporter progress("evaluate", rows.size(), a.quiet);
+      for (const Row& row : rows) {
+        throwIfInterrupted();
+        evaluations.push_back(evaluateMesh(row.method, row.mesh, *errors));
+        if (!a.heatmaps.empty()) writeHeatmaps(a.heatmaps, evaluations.back(), row.mesh, *errors);
+        progress.advance();
+      }
+      progress.finish();
     }
-    progress.finish();
     const auto collapse = std::find_if(evaluations.begin(), evaluations.end(),
                                        [](const MethodEvaluation& e) { return e.method == "edge_collapse"; });
 
@@ -214,7 +228,7 @@ void registerEvalCommand(CLI::App& app) {
                   collapse->probeErrors.size());
     }
 
-    if (!a.counts.empty()) compareAtCounts(dataset, selection, a.counts, a.seed, errors);
+    if (!a.counts.empty()) compareAtCounts(dataset, selection, a.counts, a.seed, *errors);
 
     if (!a.json.empty()) {
       nlohmann::json document = {{"dataset", a.dataset},

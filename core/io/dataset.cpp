@@ -182,7 +182,9 @@ Panorama Dataset::loadView(const ViewRecord& view, int width) const {
   return downsamplePanorama(readPanoramaExr(path, glm::ivec2(manifest_.width, manifest_.height)), factor);
 }
 
-Dataset Dataset::withSamples(std::span<const int> indices) const {
+Dataset Dataset::withSamples(std::span<const int> indices) const { return withViews(indices, {}); }
+
+Dataset Dataset::withViews(std::span<const int> indices, std::span<const int> probeIndices) const {
   Dataset subset;
   subset.directory_ = directory_;
   subset.manifest_.scene = manifest_.scene;
@@ -192,6 +194,8 @@ Dataset Dataset::withSamples(std::span<const int> indices) const {
   subset.manifest_.walkable = walkableRegion();
   subset.manifest_.samples.reserve(indices.size());
   for (int i : indices) subset.manifest_.samples.push_back(sample(i));
+  subset.manifest_.probes.reserve(probeIndices.size());
+  for (int i : probeIndices) subset.manifest_.probes.push_back(probe(i));
   return subset;
 }
 

@@ -70,6 +70,9 @@ public:
   // probes, over the same walkable region and files: a tile of a tiled
   // decimation loads only its views. Sample i of it is sample indices[i].
   Dataset withSamples(std::span<const int> indices) const;
+  // The same with the given probes too (indices, sorted): probe i of it is
+  // probe probeIndices[i].
+  Dataset withViews(std::span<const int> indices, std::span<const int> probeIndices) const;
 
   // Index of the sample with this id, or -1.
   int sampleIndexOfId(int id) const;

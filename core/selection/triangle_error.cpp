@@ -102,14 +102,15 @@ const char* triangleDestinationsName(TriangleDestinations destinations) {
   return "?";
 }
 
-std::vector<std::pair<int, double>> DatasetTriangleErrors::destinationsOf(const Triangle& triangle) const {
-  const glm::dvec2 a = positions_[size_t(triangle[0])], b = positions_[size_t(triangle[1])], c = positions_[size_t(triangle[2])];
+std::vector<std::pair<int, double>> triangleDestinations(std::span<const glm::dvec2> positions, const Triangle& triangle,
+                                                         TriangleDestinations kind) {
+  const glm::dvec2 a = positions[size_t(triangle[0])], b = positions[size_t(triangle[1])], c = positions[size_t(triangle[2])];
   const glm::dvec2 centroid = (a + b + c) / 3.0;
-  if (settings_.destinations == TriangleDestinations::Interior) {
+  if (kind == TriangleDestinations::Interior) {
     std::vector<int> inside;
-    for (int s = 0; s < int(positions_.size()); ++s) {
+    for (int s = 0; s < int(positions.size()); ++s) {
       if (s == triangle[0] || s == triangle[1] || s == triangle[2]) continue;
-      const glm::dvec2 p = positions_[size_t(s)];
+      const glm::dvec2 p = positions[size_t(s)];
       if (orientation(a, b, p) > 0 && orientation(b, c, p) > 0 && orientation(c, a, p) > 0) inside.push_back(s);
     }
     if (!inside.empty()) {
@@ -119,13 +120,13 @@ std::vector<std::pair<int, double>> DatasetTriangleErrors::destinationsOf(const 
       std::vector<double> nearest(inside.size(), std::numeric_limits<double>::max());
       size_t next = 0;
       for (size_t i = 1; i < inside.size(); ++i) {
-        if (glm::length(positions_[size_t(inside[i])] - centroid) < glm::length(positions_[size_t(inside[next])] - centroid)) next = i;
+        if (glm::length(positions[size_t(inside[i])] - centroid) < glm::length(positions[size_t(inside[next])] - centroid)) next = i;
       }
       while (chosen.size() < std::min<size_t>(inside.size(), kMaxInteriorDestinations)) {
         chosen.push_back(inside[next]);
         size_t farthest = 0;
         for (size_t i = 0; i < inside.size(); ++i) {
-          nearest[i] = std::min(nearest[i], glm::length(positions_[size_t(inside[i])] - positions_[size_t(inside[next])]));
+          nearest[i] = std::min(nearest[i], glm::length(positions[size_t(inside[i])] - positions[size_t(inside[next])]));
           if (nearest[i] > nearest[farthest]) farthest = i;
         }
         next = farthest;
@@ -136,7 +137,7 @@ std::vector<std::pair<int, double>> DatasetTriangleErrors::destinationsOf(const 
     }
   }
   std::vector<glm::dvec2> points = {centroid};
-  if (settings_.destinations == TriangleDestinations::Quadrature) {
+  if (kind == TriangleDestinations::Quadrature) {
     points.push_back((centroid + a + b) / 3.0);
     points.push_back((centroid + b + c) / 3.0);
     points.push_back((centroid + c + a) / 3.0);
@@ -145,9 +146,9 @@ std::vector<std::pair<int, double>> DatasetTriangleErrors::destinationsOf(const 
   for (const glm::dvec2& point : points) {
     int best = -1;
     double bestDistance = std::numeric_limits<double>::max();
-    for (int s = 0; s < int(positions_.size()); ++s) {
+    for (int s = 0; s < int(positions.size()); ++s) {
       if (s == triangle[0] || s == triangle[1] || s == triangle[2]) continue;
-      const double d = glm::length(positions_[size_t(s)] - point);
+      const double d = glm::length(positions[size_t(s)] - point);
       if (d < bestDistance) bestDistance = d, best = s;
     }
     TRIWALK_CHECK(best >= 0, "a triangle needs a destination sample besides its vertices");

@@ -147,6 +147,13 @@ struct ViewLoads {
   int meshesRead = 0, meshesSimplified = 0;
 };
 
+// The destination samples of a triangle with their weights (summing to 1),
+// from the samples' positions alone: for each point (centroid, sub-triangle
+// centroids), the nearest sample that is not a vertex (ties: the lower
+// index); interior: the samples inside, spread (see kMaxInteriorDestinations).
+std::vector<std::pair<int, double>> triangleDestinations(std::span<const glm::dvec2> positions, const Triangle& triangle,
+                                                         TriangleDestinations kind);
+
 class DatasetTriangleErrors final : public TriangleErrorSource, public ReconstructionErrorSource {
 public:
   // Loads every sample (and, if asked, every probe) at the settings' width,
@@ -156,10 +163,10 @@ public:
   void computeErrors(std::span<const Triangle> triangles, std::span<double> errors) override;
   void computeReconstructionErrors(std::span<const SampleReconstruction> requests, std::span<double> errors) override;
 
-  // The destination samples of a triangle with their weights (summing to
-  // 1): for each point (centroid, sub-triangle centroids), the nearest
-  // sample that is not a vertex (ties: the lower index).
-  std::vector<std::pair<int, double>> destinationsOf(const Triangle& triangle) const;
+  // triangleDestinations of the data set's samples, as the settings choose.
+  std::vector<std::pair<int, double>> destinationsOf(const Triangle& triangle) const {
+    return triangleDestinations(positions_, triangle, settings_.destinations);
+  }
 
   // Reconstruction of an arbitrary position from reference samples,
   // compared with a panorama's display colors.

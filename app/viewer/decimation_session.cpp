@@ -3,6 +3,7 @@
 #include "core/image/color.h"
 #include "core/io/png_io.h"
 #include "core/selection/reference_selection.h"
+#include "core/selection/tiled_selection.h"
 #include "core/support/progress.h"
 
 #include <algorithm>
@@ -49,8 +50,25 @@ DecimationSession::DecimationSession(const Dataset& dataset, const TriangleError
     reachedStep_ = step_;
   }
   initialSamples_ = ViewMesh(samplePositions(dataset), initial_).vertexCount();
-  publish("loading panoramas for the " + describeErrorPanorama(settings.width, settings.stride));
+  // A capture larger than a tile is walked at once, its views read as the
+  // walker needs them; the live decimation, which needs every view (GiBs
+  // at this size), reads them only when first asked for.
+  if (size_t(dataset.sampleCount()) <= kTileSamples) {
+    startLoading();
+  } else {
+    publish(std::to_string(dataset.sampleCount()) + " samples: their panoramas are read when the decimation is first "
+            "stepped or run (a capture this large decimates faster in tiles: triwalk decimate)");
+  }
   thread_ = std::thread([this] { worker(); });
+}
+
+void DecimationSession::startLoading() {
+  {
+    std::lock_guard lock(mutex_);
+    if (loadStarted_) return;
+    loadStarted_ = true;
+  }
+  publish("loading panoramas for the " + describeErrorPanorama(settings_.width, settings_.stride));
   loader_ = std::thread([this] { loadErrors(); });
 }
 
@@ -62,8 +80,8 @@ DecimationSession::~DecimationSession() {
   }
   stopRun_ = true;
   wake_.notify_all();
-  thread_.join();
-  loader_.join();
+  thread_.join();  // the worker is the only other thread that starts the loader
+  if (loader_.joinable()) loader_.join();
 }
 
 void DecimationSession::loadErrors() {
@@ -123,6 +141,7 @@ void DecimationSession::worker() {
 
 void DecimationSession::ensureErrors() {
   if (errors_) return;
+  startLoading();
   std::unique_lock lock(mutex_);
   wake_.wait(lock, [&] { return quit_ || loadDone_; });
   if (!loadDone_) throw std::runtime_error("closing");

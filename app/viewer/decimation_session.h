@@ -87,7 +87,9 @@ private:
   void runForward(double maxError, int targetSamples, const std::string& goal, std::function<bool()> nextLoggedIsPastGoal);
   // factor: of the dense mean error, when the threshold came from one (else 0).
   void runToErrorNow(double maxError, double factor, const std::string& goal);
-  // Worker thread only. Waits for the loader.
+  // Starts reading the samples' views on the loader thread, once.
+  void startLoading();
+  // Worker thread only. Starts the loader if it has not started, and waits for it.
   void ensureErrors();
   void ensureDecimator();
   bool forwardOne();
@@ -128,6 +130,7 @@ private:
   // Loader results, handed to the worker under mutex_.
   std::unique_ptr<DatasetTriangleErrors> loadedErrors_;
   std::string loadFailure_;
+  bool loadStarted_ = false;
   bool loadDone_ = false;
   bool errorsAdopted_ = false;
   std::thread thread_;

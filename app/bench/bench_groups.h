@@ -53,8 +53,10 @@ void benchScaling(BenchTable& table, const Scene& scene, const BenchSelectionErr
 
 // Tiled decimation of generated floors (builtin-floor:CxR each), captured
 // at width, run as separate processes `jobs` at a time: time and each
-// process's peak memory, and their growth from the first floor to the last.
-void benchTiles(BenchTable& table, const std::vector<std::string>& floors, int width, int jobs);
+// process's peak memory, and their growth from the first floor to the last;
+// eval of each tiled selection; againstWhole: the first floor decimated
+// untiled too.
+void benchTiles(BenchTable& table, const std::vector<std::string>& floors, int width, int jobs, bool againstWhole);
 
 // One decimation as the main job runs it (`decimate --max-error 1.85`):
 // the panoramas loaded at the error width, the collapses, the refinement.

@@ -62,7 +62,8 @@ struct TiledFloor {
   int samples = 0, tiles = 0;
   double captureSeconds = 0.0, planSeconds = 0.0, tilesSeconds = 0.0, stitchSeconds = 0.0;
   double tilePeak = 0.0, stitchPeak = 0.0, planPeak = 0.0;
-  ChildRun untiled;  // the same floor decimated whole (the first floor only)
+  ChildRun untiled;  // the same floor decimated whole (the first floor, when asked)
+  ChildRun eval;     // Table 1 for the tiled selection (eval reads by tiles above kTileSamples)
   size_t largestTile = 0, references = 0;
   double seconds() const { return planSeconds + tilesSeconds + stitchSeconds; }
 };
@@ -80,7 +81,7 @@ TiledFloor decimateFloor(const std::string& floor, int width, int jobs, bool als
   const std::string data = (folder / "data").string(), work = (folder / "work").string();
   TiledFloor result;
   result.captureSeconds = runChild({"capture", "--quiet", "--scene", "builtin-floor:" + floor, "--width", std::to_string(width),
-                                    "--probes", "0", "--out", data},
+                                    "--probes", "20", "--out", data},
                                    "capture of builtin-floor:" + floor)
                               .seconds;
   const ChildRun plan = runChild({"tiles", "plan", "--quiet", "--dataset", data, "--out", work, "--jobs", std::to_string(jobs)},
@@ -108,6 +109,7 @@ TiledFloor decimateFloor(const std::string& floor, int width, int jobs, bool als
                                    "tiles stitch");
   result.stitchSeconds = stitch.seconds;
   result.stitchPeak = stitch.peakGigabytes;
+  result.eval = runChild({"eval", "--quiet", "--dataset", data, "--selection", (folder / "selection.json").string()}, "eval");
   result.references = readSelection(folder / "selection.json", dataset).samples.size();
   if (alsoWhole) {
     result.untiled = runChild({"decimate", "--quiet", "--tiles", "off", "--dataset", data, "--out", (folder / "whole.json").string()},
@@ -119,10 +121,10 @@ TiledFloor decimateFloor(const std::string& floor, int width, int jobs, bool als
 
 }  // namespace
 
-void benchTiles(BenchTable& table, const std::vector<std::string>& floors, int width, int jobs) {
+void benchTiles(BenchTable& table, const std::vector<std::string>& floors, int width, int jobs, bool againstWhole) {
   std::vector<TiledFloor> runs;
   for (const std::string& floor : floors) {
-    const TiledFloor run = decimateFloor(floor, width, jobs, runs.empty());
+    const TiledFloor run = decimateFloor(floor, width, jobs, againstWhole && runs.empty());
     const std::string size = std::to_string(run.samples) + " samples " + std::to_string(width) + "x" +
                              std::to_string(width / 2) + " (builtin-floor:" + floor + "), " + std::to_string(run.tiles) +
                              " tiles, " + std::to_string(jobs) + " at a time";
@@ -131,6 +133,9 @@ void benchTiles(BenchTable& table, const std::vector<std::string>& floors, int w
                    formatNumber(run.stitchSeconds, 1) + " = " + formatNumber(run.seconds(), 1) + " s",
                std::to_string(run.references) + " references; capture " + formatNumber(run.captureSeconds, 1) +
                    " s; largest tile " + std::to_string(run.largestTile) + " samples"});
+    table.add({"capture, tiled decimation and eval, end to end", size,
+               formatNumber(run.captureSeconds + run.seconds() + run.eval.seconds, 1) + " s",
+               "eval " + formatNumber(run.eval.seconds, 1) + " s, peak " + formatNumber(run.eval.peakGigabytes, 2) + " GiB"});
     table.add({"tiled decimation: peak memory of one process", size,
                formatNumber(run.tilePeak, 2) + " GiB a tile",
                "plan " + formatNumber(run.planPeak, 2) + " GiB, stitch " + formatNumber(run.stitchPeak, 2) + " GiB"});

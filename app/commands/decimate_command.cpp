@@ -22,7 +22,7 @@ namespace {
 std::string tilesHelp() {
   return "Decimate in tiles, stitched (docs/DESIGN.md, \"Tiled selection\"): a number of tiles, off, or auto (above " +
          std::to_string(kTileSamples) + " samples, tiles of at most " + std::to_string(kTileSamples) +
-         " with their margins; at 1,584 the tiles took a third of one decimation's time, docs/BENCHMARKS.md)";
+         " with their margins; at 1,940 samples the tiles took an eighth of one decimation's time, docs/RESULTS.md)";
 }
 
 // The tiled decimation: its work folder beside the selection file, kept

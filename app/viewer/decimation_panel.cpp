@@ -90,7 +90,7 @@ void drawDecimationPanel(ViewerState& state) {
     }
   }
   ImGui::TextWrapped("%s%s", s.busy ? "working: " : "", s.status.c_str());
-  if (!s.errorsReady) {
+  if (s.errorsLoading) {
     ImGui::TextWrapped("panoramas at the error width still loading: new collapses, triangle colours and the inspector "
                        "follow when they are in");
   }

@@ -197,6 +197,7 @@ void DecimationSession::publish(const std::string& status) {
   if (denseMeanError_) next.denseMeanError = *denseMeanError_;
   next.status = status;
   std::lock_guard lock(mutex_);
+  next.errorsLoading = loadStarted_ && !next.errorsReady;
   next.version = snapshot_.version + 1;
   next.busy = snapshot_.busy;
   snapshot_ = std::move(next);

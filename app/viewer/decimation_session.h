@@ -50,6 +50,7 @@ public:
     // relative error has measured it; NaN before.
     double denseMeanError = std::numeric_limits<double>::quiet_NaN();
     bool errorsReady = false;            // panoramas loaded at the error width
+    bool errorsLoading = false;          // being loaded (a large capture's wait until asked for)
     bool busy = false;
     std::string status;
   };

@@ -5,6 +5,7 @@
 // walls and serves every sample.
 
 #include "core/io/dataset.h"
+#include "core/io/json_fields.h"
 #include "core/selection/selection.h"
 #include "tests/command_line_runner.h"
 
@@ -169,6 +170,28 @@ TEST_CASE("tiles refuses bad input in one line before any work: a bad --tiles, a
   const RunResult stale = runTriwalk(directory, "tiles stitch --plan " + other + " --out " + (directory / "y.json").string());
   CHECK(stale.status != 0);
   CHECK(stale.err.find("tile_0000.json: tile 0 of 4 has not run for this plan") != std::string::npos);
+
+  // A plan whose tile could not be decimated (2 samples) or asks for a
+  // negative count: refused naming the plan and the tile, before its views
+  // are read.
+  const nlohmann::json sound = readJsonFile(directory / "other" / "plan.json");
+  for (const auto& [field, problem] : {std::pair{"samples", "samples: a tile needs at least 3, got 2"},
+                                       std::pair{"target", "target must not be negative, got -1"}}) {
+    nlohmann::json hostile = sound;
+    nlohmann::json& tile = hostile["tiles"][1];
+    if (std::string(field) == "samples") {
+      tile["samples"] = nlohmann::json::array({tile["members"][0], tile["members"][1]});
+    } else {
+      tile["target"] = -1;
+    }
+    writeJsonFile(directory / "other" / "plan.json", hostile);
+    const RunResult refused = runTriwalk(directory, "tiles run --plan " + other + " --tile 1");
+    CHECK(refused.status != 0);
+    CHECK(refused.err.rfind("triwalk: error: " + other + "/plan.json: ", 0) == 0);
+    CHECK(refused.err.find(problem) != std::string::npos);
+    CHECK(refused.err.find("load") == std::string::npos);
+    CHECK(std::count(refused.err.begin(), refused.err.end(), '\n') == 1);
+  }
 
   // A damaged plan: one line naming it, for every command that reads it.
   {

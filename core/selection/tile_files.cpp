@@ -137,12 +137,19 @@ TilePlan readTilePlan(const std::filesystem::path& folder, const Dataset& datase
     tile.core.upper = {core[2].get<double>(), core[3].get<double>()};
     tile.core.members = ids.indices(entry, "members");
     tile.samples = ids.indices(entry, "samples");
+    // Fewer could not be triangulated: said here, naming the plan, not by
+    // the tile's run after it has read its views.
+    if (tile.samples.size() < 3) {
+      entry.fail("samples: a tile needs at least 3, got " + std::to_string(tile.samples.size()));
+    }
     for (int m : tile.core.members) {
       if (owned[size_t(m)]) entry.fail("members: sample id " + std::to_string(dataset.sample(m).id) + " is in two cores");
       owned[size_t(m)] = 1;
       if (!std::binary_search(tile.samples.begin(), tile.samples.end(), m)) entry.fail("a member is not among samples");
     }
-    plan.tileTargets.push_back(entry.integer("target"));
+    const int target = entry.integer("target");
+    if (target < 0) entry.fail("target must not be negative, got " + std::to_string(target));
+    plan.tileTargets.push_back(target);
     plan.tiles.push_back(std::move(tile));
   }
   if (std::count(owned.begin(), owned.end(), 0) > 0) root.fail("tiles: some samples are in no core");

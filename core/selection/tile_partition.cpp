@@ -6,12 +6,12 @@
 #include <limits>
 
 namespace triwalk {
-namespace {
 
-double distanceToRectangle(glm::dvec2 p, glm::dvec2 lower, glm::dvec2 upper) {
-  const glm::dvec2 outside = glm::max(glm::max(lower - p, p - upper), glm::dvec2(0.0));
-  return glm::length(outside);
+double distanceToCore(glm::dvec2 p, const TileCore& core) {
+  return glm::length(glm::max(glm::max(core.lower - p, p - core.upper), glm::dvec2(0.0)));
 }
+
+namespace {
 
 // Splits core across axis between two distinct coordinates at its median;
 // false if all its samples share the coordinate.
@@ -49,19 +49,19 @@ public:
     });
   }
 
-  // Calls visit(i) for each sample within `distance` of the rectangle, in no set order.
+  // Calls visit(i) for each sample within `distance` of the core's rectangle, in no set order.
   template <class Visit>
-  void forEachNear(glm::dvec2 lower, glm::dvec2 upper, double distance, Visit visit) const {
+  void forEachNear(const TileCore& core, double distance, Visit visit) const {
     auto first = std::partition_point(order_.begin(), order_.end(),
-                                      [&](int i) { return positions_[size_t(i)].x < lower.x - distance; });
-    for (auto at = first; at != order_.end() && positions_[size_t(*at)].x <= upper.x + distance; ++at) {
-      if (distanceToRectangle(positions_[size_t(*at)], lower, upper) <= distance) visit(*at);
+                                      [&](int i) { return positions_[size_t(i)].x < core.lower.x - distance; });
+    for (auto at = first; at != order_.end() && positions_[size_t(*at)].x <= core.upper.x + distance; ++at) {
+      if (distanceToCore(positions_[size_t(*at)], core) <= distance) visit(*at);
     }
   }
 
   size_t countNear(const TileCore& core, double distance) const {
     size_t count = 0;
-    forEachNear(core.lower, core.upper, distance, [&](int) { ++count; });
+    forEachNear(core, distance, [&](int) { ++count; });
     return count;
   }
 
@@ -121,7 +121,7 @@ std::vector<Tile> tilesWithMargin(std::span<const glm::dvec2> positions, std::ve
   tiles.reserve(cores.size());
   for (TileCore& core : cores) {
     Tile tile;
-    alongX.forEachNear(core.lower, core.upper, margin, [&](int i) { tile.samples.push_back(i); });
+    alongX.forEachNear(core, margin, [&](int i) { tile.samples.push_back(i); });
     std::sort(tile.samples.begin(), tile.samples.end());
     tile.core = std::move(core);
     tiles.push_back(std::move(tile));
@@ -135,7 +135,7 @@ std::vector<int> bandMembers(std::span<const glm::dvec2> positions, const TileCo
   for (int i : core.members) {
     for (const TileCore& other : cores) {
       if (&other == &core) continue;
-      if (distanceToRectangle(positions[size_t(i)], other.lower, other.upper) <= distance) {
+      if (distanceToCore(positions[size_t(i)], other) <= distance) {
         band.push_back(i);
         break;
       }

@@ -41,6 +41,9 @@ struct CoreSplitStop {
 // core can be split (samples that share a position). Deterministic.
 std::vector<TileCore> splitIntoCores(std::span<const glm::dvec2> positions, double margin, CoreSplitStop stop);
 
+// How far p lies outside the core's rectangle (0 inside it).
+double distanceToCore(glm::dvec2 p, const TileCore& core);
+
 // Each core with the samples within `margin` metres of its rectangle.
 std::vector<Tile> tilesWithMargin(std::span<const glm::dvec2> positions, std::vector<TileCore> cores, double margin);
 

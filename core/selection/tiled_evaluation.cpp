@@ -13,17 +13,12 @@
 namespace triwalk {
 namespace {
 
-// What one mesh asks of the tiles: each triangle's destinations and the
-// core that owns it, each probe's triangle.
+// What one mesh asks of the tiles: each triangle's destinations, and the
+// triangles each core owns.
 struct MeshWork {
   std::vector<std::vector<std::pair<int, double>>> destinations;
-  std::vector<int> triangleOwner;
-  std::vector<int> probeTriangle;
+  std::vector<std::vector<size_t>> ownedBy;  // by core: triangle indices, ascending
 };
-
-double distanceToRectangle(glm::dvec2 p, const TileCore& core) {
-  return glm::length(glm::max(glm::max(core.lower - p, p - core.upper), glm::dvec2(0.0)));
-}
 
 int localIndex(const std::vector<int>& sorted, int index) {
   return int(std::lower_bound(sorted.begin(), sorted.end(), index) - sorted.begin());
@@ -50,7 +45,7 @@ std::vector<MethodEvaluation> evaluateMeshesInTiles(const Dataset& dataset, cons
     const glm::dvec2 position(dataset.probe(p).position);
     double nearest = std::numeric_limits<double>::infinity();
     for (size_t k = 0; k < cores.size(); ++k) {
-      if (const double d = distanceToRectangle(position, cores[k]); d < nearest) nearest = d, probeOwner[size_t(p)] = int(k);
+      if (const double d = distanceToCore(position, cores[k]); d < nearest) nearest = d, probeOwner[size_t(p)] = int(k);
     }
   }
 
@@ -60,19 +55,20 @@ std::vector<MethodEvaluation> evaluateMeshesInTiles(const Dataset& dataset, cons
     const ViewMesh& mesh = *meshes[m].mesh;
     MeshWork& w = work[m];
     w.destinations.resize(mesh.triangles().size());
-    w.triangleOwner.resize(mesh.triangles().size());
     tbb::parallel_for(size_t(0), mesh.triangles().size(), [&](size_t t) {
       w.destinations[t] = triangleDestinations(positions, mesh.triangles()[t], settings.destinations);
-      w.triangleOwner[t] = coreOf[size_t(w.destinations[t].front().first)];
     });
-    for (int p = 0; p < dataset.probeCount(); ++p) w.probeTriangle.push_back(mesh.locate(glm::dvec2(dataset.probe(p).position)));
+    w.ownedBy.resize(cores.size());
+    for (size_t t = 0; t < mesh.triangles().size(); ++t) {
+      w.ownedBy[size_t(coreOf[size_t(w.destinations[t].front().first)])].push_back(t);
+    }
     MethodEvaluation& e = evaluations[m];
     e.method = meshes[m].method;
     e.samples = mesh.vertexCount();
     e.triangles = mesh.triangleCount();
     e.triangleErrors.resize(mesh.triangles().size());
     e.probeErrors.resize(size_t(dataset.probeCount()));
-    e.probeTriangles = w.probeTriangle;
+    for (int p = 0; p < dataset.probeCount(); ++p) e.probeTriangles.push_back(mesh.locate(glm::dvec2(dataset.probe(p).position)));
   }
 
   ProgressReporter progress("evaluate, by tiles", cores.size(), quiet);
@@ -83,13 +79,12 @@ std::vector<MethodEvaluation> evaluateMeshesInTiles(const Dataset& dataset, cons
       if (probeOwner[size_t(p)] != int(k)) continue;
       probes.push_back(p);
       for (size_t m = 0; m < meshes.size(); ++m) {
-        const Triangle& t = meshes[m].mesh->triangles()[size_t(work[m].probeTriangle[size_t(p)])];
+        const Triangle& t = meshes[m].mesh->triangles()[size_t(evaluations[m].probeTriangles[size_t(p)])];
         needed.insert(needed.end(), t.begin(), t.end());
       }
     }
     for (size_t m = 0; m < meshes.size(); ++m) {
-      for (size_t t = 0; t < work[m].triangleOwner.size(); ++t) {
-        if (work[m].triangleOwner[t] != int(k)) continue;
+      for (size_t t : work[m].ownedBy[k]) {
         const Triangle& triangle = meshes[m].mesh->triangles()[t];
         needed.insert(needed.end(), triangle.begin(), triangle.end());
         for (const auto& [destination, weight] : work[m].destinations[t]) needed.push_back(destination);
@@ -106,11 +101,9 @@ std::vector<MethodEvaluation> evaluateMeshesInTiles(const Dataset& dataset, cons
                                  true);
     for (size_t m = 0; m < meshes.size(); ++m) {
       const std::vector<Triangle>& triangles = meshes[m].mesh->triangles();
-      std::vector<size_t> owned;
+      const std::vector<size_t>& owned = work[m].ownedBy[k];
       std::vector<SampleReconstruction> requests;
-      for (size_t t = 0; t < triangles.size(); ++t) {
-        if (work[m].triangleOwner[t] != int(k)) continue;
-        owned.push_back(t);
+      for (size_t t : owned) {
         for (const auto& [destination, weight] : work[m].destinations[t]) {
           requests.push_back({localTriangle(needed, triangles[t]), localIndex(needed, destination)});
         }
@@ -126,7 +119,7 @@ std::vector<MethodEvaluation> evaluateMeshesInTiles(const Dataset& dataset, cons
       }
       tbb::parallel_for(size_t(0), probes.size(), [&](size_t local) {
         const int p = probes[local];
-        const Triangle triangle = localTriangle(needed, triangles[size_t(work[m].probeTriangle[size_t(p)])]);
+        const Triangle triangle = localTriangle(needed, triangles[size_t(evaluations[m].probeTriangles[size_t(p)])]);
         evaluations[m].probeErrors[size_t(p)] =
             errors.errorAt(triangle, dataset.probe(p).position, errors.probeDisplay(int(local))).total;
       });

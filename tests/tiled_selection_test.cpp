@@ -7,6 +7,7 @@
 #include "core/selection/edge_collapse_decimator.h"
 #include "core/selection/selection_refinement.h"
 #include "core/selection/tile_partition.h"
+#include "core/selection/tiled_selection.h"
 #include "tests/test_support.h"
 
 #include <doctest/doctest.h>
@@ -114,6 +115,38 @@ TEST_CASE("a tile holds its core and the samples within the margin of it, and th
   for (int i : band1) CHECK((positions[size_t(i)].x == 4.0 || positions[size_t(i)].x == 7.0));
   const std::vector<int> band0 = bandMembers(positions, cores[0], 0.5, cores);
   CHECK(band0.size() == 4);  // the capture's own edge (x = 0) is no seam
+}
+
+TEST_CASE("seam rounds: tiles whose steps do not reach each other share a round, and no two of a round do") {
+  // Tile j's step changes its band and reads its tile; two steps may run at
+  // once only when neither's band holds a sample of the other's tile.
+  auto colouring = [](const std::vector<glm::dvec2>& positions, int count, double margin) {
+    const std::vector<TileCore> cores = splitIntoCores(positions, 0.0, {.count = count});
+    const std::vector<Tile> tiles = tilesWithMargin(positions, cores, margin);
+    std::vector<std::vector<int>> bands;
+    for (const TileCore& core : cores) bands.push_back(bandMembers(positions, core, 0.5, cores));
+    const std::vector<int> colours = seamColours(tiles, bands, positions.size());
+    for (size_t j = 0; j < tiles.size(); ++j) {
+      for (size_t k = 0; k < tiles.size(); ++k) {
+        if (j == k || colours[j] != colours[k]) continue;
+        for (int s : bands[j]) CHECK(!std::binary_search(tiles[k].samples.begin(), tiles[k].samples.end(), s));
+      }
+    }
+    return colours;
+  };
+  // A strip of 4 cores of 4 columns, bands of one column: with 1 m of
+  // margin tile 2 (columns 7-12) holds nothing of band 0 (column 3), so
+  // alternate tiles share a round.
+  const std::vector<glm::dvec2> strip = testing::unitGrid(16, 4);
+  CHECK(colouring(strip, 4, 1.0) == std::vector<int>{0, 1, 0, 1});
+  // With 5 m of margin tile 0 reaches column 8, band 2's: every step reaches
+  // the next but one, and only tiles 0 and 3 may share a round.
+  CHECK(colouring(strip, 4, 5.0) == std::vector<int>{0, 1, 2, 0});
+  // A 4 x 4 grid of cores: a band's corner sample lies in the diagonal
+  // neighbour's margin, so four rounds, four steps each.
+  const std::vector<int> grid = colouring(testing::unitGrid(16, 16), 16, 1.0);
+  CHECK(*std::max_element(grid.begin(), grid.end()) == 3);
+  for (int colour = 0; colour < 4; ++colour) CHECK(std::count(grid.begin(), grid.end(), colour) == 4);
 }
 
 TEST_CASE("frozen samples: collapses never remove a frozen reference, and refinement never moves one or takes a frozen sample") {

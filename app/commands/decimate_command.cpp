@@ -38,10 +38,11 @@ void decimateTiled(const Dataset& dataset, const ResolvedSelection& resolved, in
   if (!stitched) return;
   writeSelection(out, stitched->selection, dataset);
   std::filesystem::remove_all(folder);
-  std::printf("kept %zu of %d samples, %zu triangles: the %zu tiles' cores kept %zu, the seam pass made %zu "
-              "collapses and %zu moves\n",
+  std::printf("kept %zu of %d samples, %zu triangles: the %zu tiles' cores kept %zu, the seam pass (%zu rounds) made "
+              "%zu collapses and %zu moves\n",
               stitched->selection.samples.size(), dataset.sampleCount(), stitched->selection.triangles.size(),
-              stitched->tiles, stitched->unionSamples, stitched->seamCollapses, stitched->seamMoves);
+              stitched->tiles, stitched->unionSamples, stitched->seamColours, stitched->seamCollapses,
+              stitched->seamMoves);
   if (const std::string outside = describeSamplesOutsideTriangles(dataset, selectionMesh(stitched->selection, dataset));
       !outside.empty()) {
     std::printf("%s\n", outside.c_str());

@@ -92,12 +92,15 @@ void registerRun(CLI::App& tiles) {
 void registerStitch(CLI::App& tiles) {
   struct Arguments {
     std::string plan, out;
+    int jobs = defaultJobs();
     bool quiet = false;
   };
   auto arguments = std::make_shared<Arguments>();
   CLI::App* command = tiles.add_subcommand("stitch", "Stitch the tiles of a plan into one selection file");
   command->add_option("--plan", arguments->plan, "Work folder of tiles plan")->required();
   command->add_option("--out", arguments->out, "Selection file to write (selection.json)")->required()->check(writableFile());
+  command->add_option("--jobs", arguments->jobs, "Seam steps run at once (default: the cores; the selection is the same)")
+      ->check(CLI::Range(1, 4096));
   command->add_flag("--quiet", arguments->quiet, "No progress output");
   command->callback([arguments] {
     const Arguments& a = *arguments;
@@ -105,11 +108,11 @@ void registerStitch(CLI::App& tiles) {
     const TilePlan plan = readTilePlan(a.plan, dataset);
     const std::vector<TileOutcome> outcomes = readTileOutcomes(a.plan, plan, dataset);
     InterruptScope interruptScope;
-    StitchResult stitched = stitchTiles(dataset, plan, outcomes, tileLayerCacheBytes(1), a.quiet);
+    StitchResult stitched = stitchTiles(dataset, plan, outcomes, a.jobs, a.quiet);
     writeSelection(a.out, stitched.selection, dataset);
-    std::printf("kept %zu of %d samples (the cores kept %zu; seam pass: %zu collapses, %zu moves); wrote %s\n",
-                stitched.selection.samples.size(), dataset.sampleCount(), stitched.unionSamples, stitched.seamCollapses,
-                stitched.seamMoves, a.out.c_str());
+    std::printf("kept %zu of %d samples (the cores kept %zu; seam pass in %zu rounds: %zu collapses, %zu moves); wrote %s\n",
+                stitched.selection.samples.size(), dataset.sampleCount(), stitched.unionSamples, stitched.seamColours,
+                stitched.seamCollapses, stitched.seamMoves, a.out.c_str());
   });
 }
 

@@ -186,7 +186,7 @@ std::optional<StitchResult> decimateInTiles(const Dataset& dataset, const TilePl
     const OutputLock lock(folder);
     const TilePlan plan = planOrResume(dataset, request, folder, quiet);
     runTilesHere(folder, dataset, plan, request.jobs, quiet);
-    return stitchTiles(dataset, plan, readTileOutcomes(folder, plan, dataset), tileLayerCacheBytes(1), quiet);
+    return stitchTiles(dataset, plan, readTileOutcomes(folder, plan, dataset), request.jobs, quiet);
   }
   const MpiWorld world;
   if (world.rank() != 0) {
@@ -207,7 +207,7 @@ std::optional<StitchResult> decimateInTiles(const Dataset& dataset, const TilePl
   world.broadcast(0);
   const std::vector<int> pending = tilesToRun(folder, dataset, *plan);
   handOutTiles(world, folder, dataset, *plan, pending, quiet);
-  return stitchTiles(dataset, *plan, readTileOutcomes(folder, *plan, dataset), tileLayerCacheBytes(1), quiet);
+  return stitchTiles(dataset, *plan, readTileOutcomes(folder, *plan, dataset), request.jobs, quiet);
 }
 
 }  // namespace triwalk

@@ -202,8 +202,110 @@ TileOutcome runTile(const Dataset& dataset, const TilePlan& plan, int k, size_t 
   return outcome;
 }
 
+namespace {
+
+// What one seam step decided: for each sample of its band (in band order),
+// whether it is a reference afterwards.
+struct SeamStep {
+  std::vector<char> bandKept;
+  size_t collapses = 0, moves = 0;
+};
+
+// The seam step of tile k over its views: the references of its band may
+// collapse and move, everything else is frozen. It reads the references of
+// the tile's samples only and changes those of its band only, which is
+// what lets steps of tiles that do not reach each other run at once.
+SeamStep runSeamStep(const Dataset& dataset, const TilePlan& plan, const TileSettings& settings,
+                     const std::vector<double>& weights, const WalkableRegion& region, size_t k,
+                     std::span<const int> band, const std::vector<char>& isReference, int removals) {
+  const Tile& tile = plan.tiles[k];
+  SeamStep step;
+  for (int s : band) step.bandKept.push_back(isReference[size_t(s)]);
+  std::vector<int> localReferences;
+  std::vector<char> frozen(tile.samples.size(), 1);
+  size_t freeReferences = 0;
+  for (size_t local = 0; local < tile.samples.size(); ++local) {
+    const int sample = tile.samples[local];
+    if (isAmong(band, sample)) frozen[local] = 0;
+    if (isReference[size_t(sample)]) {
+      localReferences.push_back(int(local));
+      if (!frozen[local]) ++freeReferences;
+    }
+  }
+  if (freeReferences == 0 || localReferences.size() < 4) return step;
+
+  const Dataset part = dataset.withSamples(tile.samples);
+  DatasetTriangleErrors errors(part, settings.errors, LoadedViews::Samples, true);
+  CachingReconstructionErrors sampleErrors(errors);
+  const ViewMesh mesh = datasetMesh(part, localReferences, dataset.manifestPath().string());
+  DecimationOptions options = settings.selection.decimation;
+  options.frozen = frozen;
+  options.sampleWeights = restricted(weights, tile.samples);
+  if (plan.target > 0) {
+    options.targetSamples = std::max(3, mesh.vertexCount() - std::min(removals, int(freeReferences)));
+    options.maxError = 0.0;
+  }
+  std::unique_ptr<EdgeCollapseDecimator> decimator =
+      datasetDecimator(part, mesh.triangles(), DecimationErrors{&errors, &sampleErrors}, options);
+  if (plan.target == 0 || options.targetSamples < mesh.vertexCount()) {
+    if (decimator->run() == StopReason::Interrupted) throw Interrupted();
+  }
+  step.collapses = decimator->log().size();
+
+  RefinementOptions refinement = settings.selection.refinement;
+  refinement.region = &region;
+  refinement.sampleWeights = options.sampleWeights;
+  refinement.frozen = frozen;
+  refinement.maxExchanges = int(freeReferences);
+  const RefinementResult refined =
+      refineSelection(mesh.positions(), decimator->mesh().triangles(), sampleErrors, refinement, nullptr);
+  step.moves = refined.moves.size();
+  std::vector<char> kept(tile.samples.size(), 0);
+  for (const Triangle& t : refined.triangles) {
+    for (int v : t) kept[size_t(v)] = 1;
+  }
+  for (size_t i = 0; i < band.size(); ++i) {
+    const auto local = std::lower_bound(tile.samples.begin(), tile.samples.end(), band[i]) - tile.samples.begin();
+    step.bandKept[i] = kept[size_t(local)];
+  }
+  return step;
+}
+
+}  // namespace
+
+std::vector<int> seamColours(const std::vector<Tile>& tiles, const std::vector<std::vector<int>>& bands,
+                             size_t sampleCount) {
+  // Tiles j and k reach each other when the band one step changes holds a
+  // sample the other step reads (its tile's samples).
+  std::vector<std::vector<int>> tilesOfSample(sampleCount);
+  for (size_t k = 0; k < tiles.size(); ++k) {
+    for (int s : tiles[k].samples) tilesOfSample[size_t(s)].push_back(int(k));
+  }
+  std::vector<std::vector<int>> reaches(tiles.size());
+  for (size_t j = 0; j < tiles.size(); ++j) {
+    for (int s : bands[j]) {
+      for (int k : tilesOfSample[size_t(s)]) {
+        if (size_t(k) == j) continue;
+        reaches[j].push_back(k);
+        reaches[size_t(k)].push_back(int(j));
+      }
+    }
+  }
+  // Greedy in tile order: each tile the lowest colour none of the earlier
+  // tiles it reaches has.
+  std::vector<int> colours(tiles.size(), -1);
+  for (size_t k = 0; k < tiles.size(); ++k) {
+    std::vector<char> taken(tiles.size() + 1, 0);
+    for (int other : reaches[k]) {
+      if (colours[size_t(other)] >= 0) taken[size_t(colours[size_t(other)])] = 1;
+    }
+    colours[k] = int(std::find(taken.begin(), taken.end(), 0) - taken.begin());
+  }
+  return colours;
+}
+
 StitchResult stitchTiles(const Dataset& dataset, const TilePlan& plan, const std::vector<TileOutcome>& outcomes,
-                         size_t layerCacheBytes, bool quiet) {
+                         int jobs, bool quiet) {
   TRIWALK_CHECK(outcomes.size() == plan.tiles.size(), "one outcome per tile");
   const std::vector<glm::dvec2> positions = samplePositions(dataset);
   std::vector<char> isReference(positions.size(), 0);
@@ -213,86 +315,63 @@ StitchResult stitchTiles(const Dataset& dataset, const TilePlan& plan, const std
   StitchResult result;
   result.unionSamples = size_t(std::count(isReference.begin(), isReference.end(), 1));
 
-  TileSettings settings = tileSettings(plan, dataset);
-  settings.errors.layerCacheBytes = layerCacheBytes;
+  const TileSettings settings = [&] {
+    TileSettings resolved = tileSettings(plan, dataset);
+    resolved.errors.layerCacheBytes = tileLayerCacheBytes(std::max(1, jobs));
+    return resolved;
+  }();
   const std::vector<double> weights = selectionSampleWeights(dataset);
   const WalkableRegion region = dataset.walkableRegion();
   std::vector<TileCore> cores;
   for (const Tile& tile : plan.tiles) cores.push_back(tile.core);
   std::vector<std::vector<int>> bands;
-  size_t bandSamples = 0;
-  for (const TileCore& core : cores) {
-    bands.push_back(bandMembers(positions, core, plan.band, cores));
-    bandSamples += bands.back().size();
-  }
+  for (const TileCore& core : cores) bands.push_back(bandMembers(positions, core, plan.band, cores));
+  const std::vector<int> colours = seamColours(plan.tiles, bands, positions.size());
+  result.seamColours = size_t(*std::max_element(colours.begin(), colours.end()) + 1);
 
-  // The seam pass, tile by tile in order, each seeing what the earlier ones
-  // left: within the tile's views, the references of its band may collapse
-  // and move; everything else is frozen.
-  ProgressReporter progress("seam pass", plan.tiles.size(), quiet);
-  for (size_t k = 0; k < plan.tiles.size(); ++k) {
+  // The seam pass, colour by colour: the steps of one colour do not reach
+  // each other, so they run at once and each sees what the earlier colours
+  // left; the selection is the same whatever runs them.
+  ProgressReporter progress("seam pass, " + std::to_string(result.seamColours) + " rounds", plan.tiles.size(), quiet);
+  tbb::task_arena arena(std::max(1, jobs));
+  for (int colour = 0; colour < int(result.seamColours); ++colour) {
     throwIfInterrupted();
-    const Tile& tile = plan.tiles[k];
-    std::vector<int> localReferences;
-    std::vector<char> frozen(tile.samples.size(), 1);
-    size_t freeReferences = 0;
-    for (size_t local = 0; local < tile.samples.size(); ++local) {
-      const int sample = tile.samples[local];
-      if (isAmong(bands[k], sample)) frozen[local] = 0;
-      if (isReference[size_t(sample)]) {
-        localReferences.push_back(int(local));
-        if (!frozen[local]) ++freeReferences;
-      }
+    std::vector<size_t> round;
+    for (size_t k = 0; k < plan.tiles.size(); ++k) {
+      if (colours[k] == colour) round.push_back(k);
     }
-    if (freeReferences == 0 || localReferences.size() < 4) {
-      progress.advance();
-      continue;
-    }
-    const Dataset part = dataset.withSamples(tile.samples);
-    DatasetTriangleErrors errors(part, settings.errors, LoadedViews::Samples, true);
-    CachingReconstructionErrors sampleErrors(errors);
-    const ViewMesh mesh = datasetMesh(part, localReferences, dataset.manifestPath().string());
-
-    DecimationOptions options = settings.selection.decimation;
-    options.frozen = frozen;
-    options.sampleWeights = restricted(weights, tile.samples);
+    // With a target, the references over it are taken out here, spread over
+    // the steps still to come by the free references of their bands.
+    std::vector<int> removals(round.size(), 0);
     if (plan.target > 0) {
-      // The references over the target, spread over the seams still to come
-      // by their free references.
-      const long total = long(std::count(isReference.begin(), isReference.end(), 1));
+      const long excess = std::max(0L, long(std::count(isReference.begin(), isReference.end(), 1)) - long(plan.target));
       size_t freeLeft = 0;
-      for (size_t j = k; j < plan.tiles.size(); ++j) {
-        for (int s : bands[j]) freeLeft += size_t(isReference[size_t(s)]);
+      for (size_t k = 0; k < plan.tiles.size(); ++k) {
+        if (colours[k] < colour) continue;
+        for (int s : bands[k]) freeLeft += size_t(isReference[size_t(s)]);
       }
-      const long excess = std::max(0L, total - long(plan.target));
-      const long share = std::min<long>(long(freeReferences),
-                                        long(std::ceil(double(excess) * double(freeReferences) / double(freeLeft))));
-      options.targetSamples = std::max(3, mesh.vertexCount() - int(share));
-      options.maxError = 0.0;
+      for (size_t i = 0; i < round.size(); ++i) {
+        size_t free = 0;
+        for (int s : bands[round[i]]) free += size_t(isReference[size_t(s)]);
+        if (freeLeft > 0) removals[i] = int(std::ceil(double(excess) * double(free) / double(freeLeft)));
+      }
     }
-    std::unique_ptr<EdgeCollapseDecimator> decimator =
-        datasetDecimator(part, mesh.triangles(), DecimationErrors{&errors, &sampleErrors}, options);
-    if (plan.target == 0 || options.targetSamples < mesh.vertexCount()) {
-      if (decimator->run() == StopReason::Interrupted) throw Interrupted();
+    std::vector<SeamStep> steps(round.size());
+    arena.execute([&] {
+      tbb::parallel_for(size_t(0), round.size(), size_t(1), [&](size_t i) {
+        if (interruptRequested()) return;
+        steps[i] = runSeamStep(dataset, plan, settings, weights, region, round[i], bands[round[i]], isReference,
+                               removals[i]);
+        progress.advance();
+      });
+    });
+    throwIfInterrupted();
+    for (size_t i = 0; i < round.size(); ++i) {
+      const std::vector<int>& band = bands[round[i]];
+      for (size_t b = 0; b < band.size(); ++b) isReference[size_t(band[b])] = steps[i].bandKept[b];
+      result.seamCollapses += steps[i].collapses;
+      result.seamMoves += steps[i].moves;
     }
-    result.seamCollapses += decimator->log().size();
-
-    RefinementOptions refinement = settings.selection.refinement;
-    refinement.region = &region;
-    refinement.sampleWeights = options.sampleWeights;
-    refinement.frozen = frozen;
-    refinement.maxExchanges = int(freeReferences);
-    const RefinementResult refined = refineSelection(mesh.positions(), decimator->mesh().triangles(), sampleErrors,
-                                                     refinement, nullptr);
-    result.seamMoves += refined.moves.size();
-    std::vector<char> kept(tile.samples.size(), 0);
-    for (const Triangle& t : refined.triangles) {
-      for (int v : t) kept[size_t(v)] = 1;
-    }
-    for (size_t local = 0; local < tile.samples.size(); ++local) {
-      if (!frozen[local]) isReference[size_t(tile.samples[local])] = kept[local];
-    }
-    progress.advance();
   }
   progress.finish();
 

@@ -2,9 +2,10 @@
 // Tiled selection (docs/DESIGN.md, "Tiled selection"): a capture too large
 // for one decimation is cut into tiles (core/selection/tile_partition.h),
 // each tile decimated and refined on its own views, and the tiles
-// stitched: the references of every core are kept, then a seam pass,
-// tile by tile, lets collapses and refinement change only the band along
-// the core's borders, where two tiles' choices meet. Every tile and every
+// stitched: the references of every core are kept, then a seam pass, a
+// step a tile in rounds of tiles that do not reach each other, lets
+// collapses and refinement change only the band along the core's
+// borders, where two tiles' choices meet. Every tile and every
 // seam step reads only its own views, so memory depends on the tile size
 // and time grows linearly with the capture. The tiles are independent
 // jobs: whatever runs them (threads, MPI ranks, a batch scheduler), the
@@ -75,12 +76,21 @@ struct StitchResult {
   size_t tiles = 0;
   size_t unionSamples = 0;  // references of the cores before the seam pass
   size_t seamCollapses = 0, seamMoves = 0;
+  size_t seamColours = 0;  // rounds of the seam pass (steps of one round run at once)
 };
 
-// The union of the tiles' references, the seam pass tile by tile, and the
-// final triangulation (walls respected). outcomes: one per tile, in order.
+// The seam pass's rounds: tiles coloured (greedily, in tile order) so that
+// no two of a colour reach each other, i.e. neither's band holds a sample
+// of the other's tile. bands[k]: the samples tile k's seam step may change.
+std::vector<int> seamColours(const std::vector<Tile>& tiles, const std::vector<std::vector<int>>& bands,
+                             size_t sampleCount);
+
+// The union of the tiles' references, the seam pass (colour by colour, the
+// steps of a colour up to `jobs` at a time), and the final triangulation
+// (walls respected). outcomes: one per tile, in order. The selection does
+// not depend on jobs.
 StitchResult stitchTiles(const Dataset& dataset, const TilePlan& plan, const std::vector<TileOutcome>& outcomes,
-                         size_t layerCacheBytes, bool quiet);
+                         int jobs, bool quiet);
 
 // The layer cache each of `concurrent` tile runs in one process may use.
 size_t tileLayerCacheBytes(int concurrent);

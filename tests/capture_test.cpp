@@ -2,10 +2,13 @@
 // EGL and OSMesa agree, and the built-in scene captures as designed.
 
 #include "core/geometry/projection.h"
+#include "core/image/image_compare.h"
 #include "core/io/dataset.h"
+#include "core/io/png_io.h"
 #include "core/io/simplified_mesh_store.h"
 #include "render/capture/dataset_capture.h"
 #include "render/capture/panorama_capturer.h"
+#include "render/capture/truth_frame_renderer.h"
 #include "render/gl/gl_context.h"
 #include "render/scene/mesh_builder.h"
 #include "render/scene/scene_description.h"
@@ -112,6 +115,15 @@ void checkBoxPanorama(const Panorama& panorama) {
   CHECK(worstRelativeError <= 0.005f);
   CHECK(colorChecked > panorama.color.pixelCount() * 9 / 10);
   CHECK(colorWrong == 0);
+}
+
+// The image's mean colour everywhere.
+Rgb8Image constantImageLike(const Rgb8Image& image) {
+  glm::dvec3 sum(0.0);
+  for (const glm::u8vec3& pixel : image.pixels) sum += glm::dvec3(pixel);
+  Rgb8Image constant(image.width, image.height);
+  for (glm::u8vec3& pixel : constant.pixels) pixel = glm::u8vec3(sum / double(image.pixelCount()) + 0.5);
+  return constant;
 }
 
 }  // namespace
@@ -251,6 +263,32 @@ TEST_CASE("built-in scene: sky through the skylight, floor at eye height, neighb
   CHECK(panorama.distance.at(north, horizon) > 4.0f);
   CHECK(panorama.distance.at(north, horizon) < 11.5f);
 
+}
+
+TEST_CASE("a truth frame through a pinhole at a cube face's pose equals that face of the capture") {
+  auto context = createHeadlessContext();
+  const Scene scene = loadSceneDescription(builtinScenePath());
+  PanoramaCapturer capturer(scene, 256);
+  const int face = defaultCubeFaceSize(256);
+  const glm::vec3 eye(5.0f, 2.6f, 1.6f);
+  capturer.capture(eye);
+  // GL's +Y face looks along +y with +z up: a pinhole at yaw 90, pitch 0,
+  // 90 degrees wide and high, one sample a pixel.
+  PinholeCamera camera;
+  camera.width = camera.height = face;
+  camera.verticalFovDegrees = 90.0f;
+  camera.position = eye;
+  camera.yawDegrees = 90.0f;
+  TruthFrameRenderer truth(scene, face, face, 1);
+  const Rgb8Image fromTruth = toDisplayImage(truth.render(camera));
+  const Rgb8Image fromCube = toDisplayImage(capturer.cubeFaceColor(2));
+  CHECK(differingPixelFraction(fromTruth, fromCube, 1) < 0.002);
+  CHECK(psnr(fromTruth, fromCube) > 50.0);
+  // Not a uniform view: walls, furniture and sky of the built-in scene.
+  CHECK(psnr(fromTruth, constantImageLike(fromTruth)) < 30.0);
+  // Looking the other way is another picture.
+  camera.yawDegrees = 270.0f;
+  CHECK(psnr(toDisplayImage(truth.render(camera)), fromCube) < 25.0);
 }
 
 TEST_CASE("a glossy surface changes color with the viewpoint, a matte one does not") {

@@ -446,4 +446,60 @@ TEST_CASE("render warns in one line when its frames stand outside the walkable r
   CHECK_FALSE(std::filesystem::exists(directory / "images"));
 }
 
+
+TEST_CASE("render --truth: from a sample's own position with every sample, frames match the scene to 30 dB, and a data set without its scene is refused first") {
+  testing::TemporaryDirectory directory;
+  const std::filesystem::path data = directory / "data";
+  // Panoramas of 2048 pixels hold 5.7 pixels a degree, frames of 180 rows
+  // over 60 degrees ask for 3: from a sample's own position the warp is
+  // then near exact and what is left is filtering. (At 1024 the panorama
+  // is the blurrier of the two and textured walls fall to 28 dB.)
+  const RunResult capture = runTriwalk(directory, "capture --quiet --width 2048 --paths 3 --per-path 3 --probes 0 --out " +
+                                                      data.string(), true);
+  INFO(capture.err);
+  REQUIRE(capture.status == 0);
+  const Dataset dataset = Dataset::open(data);
+  REQUIRE(dataset.manifest().capture.contains("scene"));
+  const glm::vec3 middle = dataset.sample(4).position;
+  const std::filesystem::path frames = directory / "frames", stats = directory / "stats.json";
+  const RunResult render = runTriwalk(directory, "render --truth --dataset " + data.string() + " --at " +
+                                                     std::to_string(middle.x) + "," + std::to_string(middle.y) +
+                                                     " --frames 4 --size 320x180 --out " + frames.string() + " --stats " +
+                                                     stats.string(), true);
+  INFO(render.err);
+  REQUIRE(render.status == 0);
+  CHECK(render.out.find("frames against the scene: mean PSNR") != std::string::npos);
+  const nlohmann::json document = nlohmann::json::parse(testing::readTextFileOrEmpty(stats));
+  REQUIRE(document["frames"].size() == 4);
+  for (const nlohmann::json& frame : document["frames"]) {
+    INFO("frame " << frame.dump());
+    CHECK(frame["psnr_truth"].get<double>() >= 30.0);
+    CHECK(frame["ssim_truth"].get<double>() > 0.8);
+    CHECK(frame["ssim_truth"].get<double>() < 1.0);
+  }
+  CHECK(document["truth"]["worst_psnr"].get<double>() >= 30.0);
+  for (const char* name : {"frame_0003.png", "frame_0003_truth.png", "frame_0003_truth_diff.png"}) {
+    CHECK(std::filesystem::exists(frames / name));
+  }
+
+  // Far from every sample the warp no longer matches the scene so well.
+  const RunResult away = runTriwalk(directory, "render --truth --dataset " + data.string() +
+                                                   " --at 9.5,4.5 --frames 4 --size 320x180 --out " +
+                                                   (directory / "away").string() + " --stats " +
+                                                   (directory / "away.json").string(), true);
+  REQUIRE(away.status == 0);
+  const nlohmann::json far = nlohmann::json::parse(testing::readTextFileOrEmpty(directory / "away.json"));
+  CHECK(far["truth"]["mean_psnr"].get<double>() < document["truth"]["mean_psnr"].get<double>() - 1.0);
+
+  // A data set that keeps no scene: one line naming its manifest, no frames.
+  testing::writeAnalyticDataset(directory / "analytic", 3, 3, 64, 0);
+  const RunResult refused = runTriwalk(directory, "render --truth --dataset " + (directory / "analytic").string() +
+                                                      " --frames 2 --size 64x48 --out " + (directory / "none").string(), true);
+  CHECK(refused.status != 0);
+  CHECK(refused.err.find("manifest.json") != std::string::npos);
+  CHECK(refused.err.find("keeps no scene to render the truth from") != std::string::npos);
+  CHECK(std::count(refused.err.begin(), refused.err.end(), '\n') == 1);
+  CHECK_FALSE(std::filesystem::exists(directory / "none"));
+}
+
 }  // namespace triwalk

@@ -120,7 +120,7 @@ void compareAtCounts(const Dataset& dataset, const Selection& selection, const s
 
 void registerEvalCommand(CLI::App& app) {
   struct Arguments {
-    std::string dataset, selection, json, heatmaps;
+    std::string dataset, selection, json, heatmaps, baselinesOut;
     std::vector<int> counts;
     unsigned seed = 1;
     bool quiet = false;
@@ -132,6 +132,10 @@ void registerEvalCommand(CLI::App& app) {
   command->add_option("--selection", arguments->selection, "Edge-collapse selection (from decimate)")->required();
   command->add_option("--json", arguments->json, "Also write the rows as JSON")->check(writableFile());
   command->add_option("--heatmaps", arguments->heatmaps, "Directory for per-probe error heatmap PNGs")->check(writableDirectory());
+  command->add_option("--baselines-out", arguments->baselinesOut,
+                      "Also write each baseline at the selection's count as a selection file DIR/METHOD.json, for "
+                      "render and view (e.g. to judge their frames with render --truth)")
+      ->check(writableDirectory());
   command->add_option("--seed", arguments->seed, "Seed of the random baseline")->capture_default_str();
   command->add_option("--counts", arguments->counts,
                       "Also compare probe errors at these sample counts, replaying the selection's collapse log "
@@ -180,6 +184,18 @@ void registerEvalCommand(CLI::App& app) {
     addBaseline("geodesic_kmedoids", [&] { return geodesicKMedoidsSelection(walking, count); });
     addBaseline("farthest_point", [&] { return farthestPointSelection(walking, count); });
     addBaseline("random", [&] { return randomSelection(dataset.sampleCount(), count, a.seed); });
+
+    if (!a.baselinesOut.empty()) {
+      std::filesystem::create_directories(a.baselinesOut);
+      for (const Row& row : rows) {
+        if (row.method == "initial" || row.method == "edge_collapse") continue;
+        Selection baseline;
+        baseline.method = row.method;
+        baseline.samples = row.mesh.vertices();
+        baseline.triangles = row.mesh.triangles();
+        writeSelection(std::filesystem::path(a.baselinesOut) / (row.method + ".json"), baseline, dataset);
+      }
+    }
 
     std::vector<MethodEvaluation> evaluations;
     std::vector<UncoveredPositions> outside;  // the samples a walker finds outside every triangle, by row

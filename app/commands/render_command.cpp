@@ -1,9 +1,11 @@
 // `triwalk render`: headless walkthrough frames along a camera path, with
-// the GPU warp; --compare also renders the CPU reference of each frame.
+// the GPU warp; --compare also renders the CPU reference of each frame,
+// --truth the scene itself (what the frame should have been).
 
 #include "app/commands/commands.h"
 #include "app/setup/option_checks.h"
 #include "app/setup/quality_options.h"
+#include "app/setup/scene_loading.h"
 #include "app/setup/walkthrough_setup.h"
 #include "core/image/image_annotation.h"
 #include "core/image/image_compare.h"
@@ -14,6 +16,7 @@
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 #include "core/synthesis/blend.h"
+#include "render/capture/truth_frame_renderer.h"
 #include "render/gl/gl_context.h"
 #include "render/walkthrough/walkthrough_renderer.h"
 
@@ -23,6 +26,8 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace triwalk {
 
@@ -48,6 +53,37 @@ Rgb8Image cpuReference(const Dataset& dataset, const std::array<int, 3>& referen
   return displayImage(synthesizeView(pointers, DestinationCamera::camera(camera), synthesis).blended, synthesis.holes);
 }
 
+// How the frames of a path compare with the scene: means, the worst frame,
+// and the mean of the worst 5% of frames (at least one), each measure on
+// its own.
+struct FrameScores {
+  double meanPsnr = 0.0, meanSsim = 0.0, worstPsnr = 0.0, worstSsim = 0.0;
+  struct {
+    double psnr = 0.0, ssim = 0.0;
+  } worstShare;
+};
+
+// Equal frames count as 100 dB, so that a mean stays finite.
+constexpr double kEqualFramesPsnr = 100.0;
+
+FrameScores summarizeScores(std::vector<double> psnrs, std::vector<double> ssims) {
+  std::sort(psnrs.begin(), psnrs.end());
+  std::sort(ssims.begin(), ssims.end());
+  const size_t worst = std::max<size_t>(1, (psnrs.size() + 19) / 20);
+  auto meanOf = [](const std::vector<double>& values, size_t count) {
+    double sum = 0.0;
+    for (size_t i = 0; i < count; ++i) sum += values[i];
+    return sum / double(count);
+  };
+  FrameScores scores;
+  scores.meanPsnr = meanOf(psnrs, psnrs.size());
+  scores.meanSsim = meanOf(ssims, ssims.size());
+  scores.worstPsnr = psnrs.front();
+  scores.worstSsim = ssims.front();
+  scores.worstShare = {meanOf(psnrs, worst), meanOf(ssims, worst)};
+  return scores;
+}
+
 // --out may be replaced as a whole when it holds an earlier render: its
 // first frame marks it.
 constexpr const char* kRenderOutputMarker = "frame_0000.png";
@@ -63,7 +99,7 @@ void registerRenderCommand(CLI::App& app) {
     float fov = 60.0f, pitch = 0.0f;
     std::vector<float> at, from, to, yaw;
     int frames = 0;
-    bool compare = false, showSources = false;
+    bool compare = false, truth = false, showSources = false;
     size_t cacheMegabytes = 1024;
     QualityArguments quality;
   };
@@ -91,8 +127,12 @@ void registerRenderCommand(CLI::App& app) {
   command->add_option("--pitch", arguments->pitch, "Pitch of preset paths, degrees")->capture_default_str();
   command->add_flag("--compare", arguments->compare,
                     "Also write the CPU reference and a difference heatmap of each frame, and print PSNR");
+  command->add_flag("--truth", arguments->truth,
+                    "Also render the scene itself at each frame's pose (a data set made by capture keeps its scene), "
+                    "write it and a difference heatmap beside the frame, and print PSNR and SSIM against it");
   command->add_option("--stats", arguments->stats,
-                      "Write per-frame statistics (holes before the fill, left after it, frame time) to this JSON file")
+                      "Write per-frame statistics (holes before the fill, left after it, frame time; PSNR and SSIM "
+                      "with --compare or --truth) to this JSON file")
       ->check(writableFile());
   command->add_flag("--show-sources", arguments->showSources, "Color each pixel by the references that made it");
   command->add_option("--cache-mb", arguments->cacheMegabytes, "Memory for resident panoramas, MiB")
@@ -104,6 +144,9 @@ void registerRenderCommand(CLI::App& app) {
     const Arguments& a = *arguments;
     const Dataset dataset = Dataset::open(a.dataset);
     ViewMesh mesh = walkthroughMesh(dataset, a.selection);
+    // Before any frame: a data set that keeps no scene is said in one line.
+    std::optional<Scene> truthScene;
+    if (a.truth) truthScene.emplace(loadCapturedScene(dataset));
     int width = 0, height = 0;
     parseSize(a.size, "--size", width, height);
     const SynthesisOptions synthesis = synthesisOptions(a.quality);
@@ -145,6 +188,8 @@ void registerRenderCommand(CLI::App& app) {
     auto context = createHeadlessContext(parseHeadlessBackend(a.gl));
     PanoramaCache cache(dataset, synthesis.warp, a.cacheMegabytes << 20);
     WalkthroughRenderer renderer(std::move(mesh), cache, width, height);
+    std::optional<TruthFrameRenderer> truthRenderer;
+    if (truthScene) truthRenderer.emplace(*truthScene, width, height);
     GpuWarpSettings settings;
     settings.blend = synthesis.blend;
     settings.holes = synthesis.holes;
@@ -155,6 +200,7 @@ void registerRenderCommand(CLI::App& app) {
                                  {"blend_weights", blendWeightsName(synthesis.blend.weights)},
                                  {"frames", nlohmann::json::array()}};
     double psnrSum = 0.0, worstPsnr = INFINITY;
+    std::vector<double> truthPsnr, truthSsim;
     double frameMilliseconds = 0.0;
     InterruptScope interruptScope;
     ProgressReporter progress("render", poses.size());
@@ -172,12 +218,13 @@ void registerRenderCommand(CLI::App& app) {
       const Rgb8Image image = renderer.warper().readPixels();
       const double milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
       frameMilliseconds += milliseconds;
+      nlohmann::json frameStatistics;
       if (!a.stats.empty()) {
         const GpuHoleCounts holes = renderer.warper().countHoles();
-        statistics["frames"].push_back({{"frame", i},
-                                        {"holes_before_fill", double(holes.holesBefore) / double(holes.pixels)},
-                                        {"unfilled", double(holes.unfilled) / double(holes.pixels)},
-                                        {"ms", milliseconds}});
+        frameStatistics = {{"frame", i},
+                           {"holes_before_fill", double(holes.holesBefore) / double(holes.pixels)},
+                           {"unfilled", double(holes.unfilled) / double(holes.pixels)},
+                           {"ms", milliseconds}};
       }
       char stem[64];
       std::snprintf(stem, sizeof stem, "frame_%04zu", i);
@@ -194,8 +241,22 @@ void registerRenderCommand(CLI::App& app) {
         const double value = psnr(image, reference);
         psnrSum += value;
         worstPsnr = std::min(worstPsnr, value);
+        if (!a.stats.empty()) frameStatistics["psnr_cpu"] = value;
         progress.setStatus("PSNR " + std::to_string(int(value * 10) / 10.0).substr(0, 5) + " dB");
       }
+      if (truthRenderer) {
+        const Rgb8Image truth = toDisplayImage(truthRenderer->render(camera));
+        write("_truth.png", truth);
+        write("_truth_diff.png", withColourBar(heatmapImage(differenceImage(image, truth), 0.25f), 0.25f,
+                                               "per-pixel RMS colour difference, frame against the scene"));
+        truthPsnr.push_back(std::min(psnr(image, truth), kEqualFramesPsnr));
+        truthSsim.push_back(ssim(image, truth));
+        if (!a.stats.empty()) frameStatistics["psnr_truth"] = truthPsnr.back(), frameStatistics["ssim_truth"] = truthSsim.back();
+        char status[64];
+        std::snprintf(status, sizeof status, "against the scene: PSNR %.1f dB, SSIM %.3f", truthPsnr.back(), truthSsim.back());
+        progress.setStatus(status);
+      }
+      if (!a.stats.empty()) statistics["frames"].push_back(std::move(frameStatistics));
       progress.advance();
     }
     progress.finish();
@@ -203,6 +264,17 @@ void registerRenderCommand(CLI::App& app) {
     std::printf("rendered %zu frames %dx%d into %s (holes %s, %s weights), %.1f ms a frame with loading\n", poses.size(),
                 width, height, a.out.c_str(), holeModeName(synthesis.holes), blendWeightsName(synthesis.blend.weights),
                 frameMilliseconds / double(poses.size()));
+    if (truthRenderer) {
+      const FrameScores scores = summarizeScores(truthPsnr, truthSsim);
+      statistics["truth"] = {{"mean_psnr", scores.meanPsnr},   {"mean_ssim", scores.meanSsim},
+                             {"worst_psnr", scores.worstPsnr}, {"worst_ssim", scores.worstSsim},
+                             {"worst_5_percent_psnr", scores.worstShare.psnr},
+                             {"worst_5_percent_ssim", scores.worstShare.ssim}};
+      std::printf("frames against the scene: mean PSNR %.2f dB, SSIM %.4f; worst frame %.2f dB, %.4f; worst 5%% of "
+                  "frames %.2f dB, %.4f\n",
+                  scores.meanPsnr, scores.meanSsim, scores.worstPsnr, scores.worstSsim, scores.worstShare.psnr,
+                  scores.worstShare.ssim);
+    }
     if (!a.stats.empty()) {
       writeJsonFile(a.stats, statistics);
       std::printf("wrote frame statistics to %s\n", a.stats.c_str());

@@ -11,6 +11,7 @@ CaptureSummary captureScene(const SceneCaptureRequest& request) {
   LoadedScene loaded = loadSceneForCapture(request.scene, request.import);
   auto context = createHeadlessContext(parseHeadlessBackend(request.gl));
   CaptureOptions options = request.options;
+  options.sceneSource = sceneSource(request.scene, request.import);
   if (!options.area && !options.region && !request.autoArea && loaded.region) {
     options.region = loaded.region;
     if (!request.densityGiven && loaded.sampleSpacing) options.spacing = *loaded.sampleSpacing;

@@ -49,4 +49,44 @@ LoadedScene loadSceneForCapture(const std::string& spec, const SceneImportArgume
   return loaded;
 }
 
+nlohmann::json sceneSource(const std::string& spec, const SceneImportArguments& arguments) {
+  const bool file = spec != "builtin" && !parseFloorPlanSpec(spec);
+  return {{"spec", file ? std::filesystem::absolute(spec).lexically_normal().string() : spec},
+          {"unit_scale", arguments.unitScale},
+          {"up_axis", arguments.upAxis},
+          {"map", arguments.map}};
+}
+
+Scene loadCapturedScene(const Dataset& dataset) {
+  const std::string manifest = dataset.manifestPath().string();
+  const JsonObject capture(dataset.manifest().capture, manifest, "capture");
+  const std::string& name = dataset.manifest().scene;
+  std::string spec;
+  SceneImportArguments arguments;
+  if (capture.has("scene")) {
+    const JsonObject source = capture.object("scene");
+    spec = source.string("spec");
+    arguments.unitScale = float(source.numberOr("unit_scale", 0.0));
+    arguments.upAxis = source.stringOr("up_axis", "auto");
+    arguments.map = source.stringOr("map", "");
+    if (!(arguments.unitScale >= 0.0f && arguments.unitScale < 1e6f)) source.fail("unit_scale must be a number from 0 to 1e6");
+    if (arguments.upAxis != "auto" && arguments.upAxis != "x" && arguments.upAxis != "y" && arguments.upAxis != "z") {
+      source.fail("up_axis must be auto, x, y or z");
+    }
+    if (spec != "builtin" && !parseFloorPlanSpec(spec) && !std::filesystem::exists(spec)) {
+      source.fail("names the scene file " + spec + ", which does not exist");
+    }
+  } else if (name == "builtin" || parseFloorPlanSpec(name)) {
+    spec = name;  // the built-in family is known by its name, also in captures from before the manifest kept the scene
+  } else {
+    throw InputError(manifest, "keeps no scene to render the truth from (imported from panoramas, or captured before "
+                               "captures kept their scene)");
+  }
+  LoadedScene loaded = loadSceneForCapture(spec, arguments);
+  if (loaded.scene.passableMeshCount() > 0 && capture.stringOr("doors", "open") == "open") {
+    return withDoorsOpen(std::move(loaded.scene));
+  }
+  return std::move(loaded.scene);
+}
+
 }  // namespace triwalk

@@ -4,10 +4,12 @@
 // Assimp reads, with its import options.
 
 #include "core/geometry/walkable_region.h"
+#include "core/io/dataset.h"
 #include "render/scene/assimp_scene.h"
 #include "render/scene/scene.h"
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <optional>
 #include <string>
@@ -34,5 +36,16 @@ struct LoadedScene {
 
 // Prints what an import found (map, textures, spawn points).
 LoadedScene loadSceneForCapture(const std::string& spec, const SceneImportArguments& arguments);
+
+// What a capture keeps of --scene and the import options so that the
+// scene can be loaded again from the data set: {"spec": S, "unit_scale",
+// "up_axis", "map"}, a file's spec made absolute.
+nlohmann::json sceneSource(const std::string& spec, const SceneImportArguments& arguments);
+
+// The scene a data set was captured from, as its capture drew it (doors
+// open unless it closed them): for `render --truth`. Throws InputError
+// naming the manifest when the data set keeps no scene (imported from
+// panoramas, or captured before captures kept it) or the scene file is gone.
+Scene loadCapturedScene(const Dataset& dataset);
 
 }  // namespace triwalk

@@ -112,4 +112,9 @@ struct PinholeCamera {
   }
 };
 
+// World -> clip for a pinhole camera, reversed depth (1 at the near plane,
+// 0 at infinity) with glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE), as the
+// GPU warp and the truth frames draw.
+glm::mat4 pinholeViewProjection(const PinholeCamera& camera, float near);
+
 }  // namespace triwalk

@@ -245,6 +245,7 @@ CaptureSummary captureDataset(const Scene& sceneWithDoors, const std::string& sc
                         {"face_size", options.faceSize > 0 ? options.faceSize : defaultCubeFaceSize(options.width)},
                         {"probe_seed", options.seed}};
     if (hasDoors) manifest.capture["doors"] = options.closedDoors ? "closed" : "open";
+    if (!options.sceneSource.is_null()) manifest.capture["scene"] = options.sceneSource;
     writeManifest(staging.path(), manifest);
     staging.commit();
   }

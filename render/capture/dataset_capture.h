@@ -8,6 +8,8 @@
 #include "core/io/dataset.h"
 #include "render/scene/scene.h"
 
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
 #include <optional>
 
@@ -33,6 +35,9 @@ struct CaptureOptions {
   // would otherwise see nothing but the leaf.
   bool closedDoors = false;
   bool quiet = false;
+  // How to load the scene again, kept in the manifest's capture settings
+  // ("scene"): what `render --truth` renders the truth from. Null: not kept.
+  nlohmann::json sceneSource;
 };
 
 struct CapturePlan {

@@ -13,9 +13,6 @@ namespace triwalk {
 
 namespace {
 
-constexpr int kMaxLights = 16;  // shaders/scene.frag
-constexpr float kCaptureNearPlane = 0.01f;  // metres
-
 // The orientation OpenGL expects for each cube face when it is rendered
 // through a framebuffer and then sampled by direction, in GL's face order
 // (+X, -X, +Y, -Y, +Z, -Z), which the face culling shares.
@@ -32,7 +29,7 @@ glm::mat4 cubeFaceProjection() {
   projection[0][0] = 1.0f;
   projection[1][1] = 1.0f;
   projection[2][3] = -1.0f;
-  projection[3][2] = kCaptureNearPlane;
+  projection[3][2] = kSceneNearPlane;
   return projection;
 }
 
@@ -41,14 +38,6 @@ void setNearestClamp(const GlTexture& texture) {
   glTextureParameteri(texture.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(texture.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-}
-
-void setSkyUniforms(ShaderProgram& program, const SkyModel& sky) {
-  program.set("skyZenith", sky.zenith);
-  program.set("skyHorizon", sky.horizon);
-  program.set("skyGround", sky.ground);
-  program.set("skySunDirection", sky.sunDirection);
-  program.set("skySunColor", sky.sunColor);
 }
 
 }  // namespace
@@ -79,13 +68,9 @@ void checkCaptureSize(int width, int faceSize, const char* option) {
 int defaultCubeFaceSize(int width) { return std::max(16, (width * 3 / 8 + 7) / 8 * 8); }
 
 PanoramaCapturer::PanoramaCapturer(const Scene& scene, int width, int faceSize)
-    : scene_(scene),
-      width_(width),
+    : width_(width),
       faceSize_(faceSize > 0 ? faceSize : defaultCubeFaceSize(width)),
-      gpuScene_(scene),
-      sceneProgram_("scene.vert", "scene.frag"),
-      distanceProgram_("scene.vert", "scene_distance.frag"),
-      skyProgram_("fullscreen.vert", "capture_sky.frag"),
+      drawer_(scene),
       equirectProgram_("fullscreen.vert", "capture_equirect.frag") {
   checkCaptureSize(width_, faceSize_, faceSize > 0 ? "--face-size" : "--width");
   colorCube_ = createTexture(GL_TEXTURE_CUBE_MAP);
@@ -129,73 +114,28 @@ PanoramaCapturer::PanoramaCapturer(const Scene& scene, int width, int faceSize)
 
 void PanoramaCapturer::renderCubeFaces(glm::vec3 position, GpuScene::Outputs outputs) {
   const glm::mat4 projection = cubeFaceProjection();
-  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glViewport(0, 0, faceSize_, faceSize_);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
-
-  // Distances only (the region search's probes) need no lights. A scene
-  // with more lights than the shader takes (a floor of rooms, each with
-  // its own) is lit by the nearest, in the scene's order among equals.
-  std::vector<size_t> lights;
-  if (outputs == GpuScene::Outputs::ColorAndDistance) {
-    for (size_t i = 0; i < scene_.lights.size(); ++i) lights.push_back(i);
-    if (lights.size() > size_t(kMaxLights)) {
-      std::stable_sort(lights.begin(), lights.end(), [&](size_t a, size_t b) {
-        return glm::length(scene_.lights[a].position - position) < glm::length(scene_.lights[b].position - position);
-      });
-      lights.resize(size_t(kMaxLights));
-    }
-  }
-  std::vector<glm::vec3> lightPositions, lightColors;
-  std::vector<float> lightRanges;
-  for (size_t i : lights) {
-    lightPositions.push_back(scene_.lights[i].position - position);
-    lightColors.push_back(scene_.lights[i].color);
-    lightRanges.push_back(scene_.lights[i].range);
-  }
-  const int lightCount = int(lights.size());
-
-  gpuScene_.selectCubeFaceTriangles(position);
+  drawer_.setEye(position, outputs);
   for (int face = 0; face < 6; ++face) {
     const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), kFaceViews[face].forward, kFaceViews[face].up);
-    const glm::mat4 viewProjection = projection * view;
     glBindFramebuffer(GL_FRAMEBUFFER, faceFramebuffers_[size_t(face)].get());
-
-    glEnable(GL_DEPTH_TEST);
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_GREATER);
-    glClearDepth(0.0);
-    glClear(GL_DEPTH_BUFFER_BIT);
-    ShaderProgram& program = outputs == GpuScene::Outputs::Distance ? distanceProgram_ : sceneProgram_;
-    program.use();
-    program.set("viewProjection", viewProjection);
-    program.set("eye", position);
-    if (outputs == GpuScene::Outputs::ColorAndDistance) {
-      program.set("ambient", scene_.ambient);
-      program.set("lightCount", lightCount);
-      if (lightCount > 0) {
-        program.setArray("lightPositions", lightPositions.data(), lightCount);
-        program.setArray("lightColors", lightColors.data(), lightCount);
-        program.setArray("lightRanges", lightRanges.data(), lightCount);
-      }
-    }
-    gpuScene_.drawCubeFace(program, face, outputs);
-
-    // Sky last, at depth 0 (infinity), only where no surface was drawn:
-    // the depth test rejects covered pixels before they are shaded.
-    glDepthFunc(GL_EQUAL);
-    glDepthMask(GL_FALSE);
-    skyProgram_.use();
-    skyProgram_.set("inverseViewProjection", glm::inverse(viewProjection));
-    setSkyUniforms(skyProgram_, scene_.sky);
-    glBindVertexArray(emptyVertexArray_.get());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDepthMask(GL_TRUE);
+    drawer_.draw(projection * view, std::span<const int>(&face, 1));
   }
-  glDepthFunc(GL_LESS);
-  glDisable(GL_DEPTH_TEST);
-  glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+}
+
+ColorImage PanoramaCapturer::cubeFaceColor(int face) const {
+  std::vector<glm::vec4> rgba(size_t(faceSize_) * size_t(faceSize_));
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glGetTextureSubImage(colorCube_.get(), 0, 0, 0, face, faceSize_, faceSize_, 1, GL_RGBA, GL_FLOAT,
+                       GLsizei(rgba.size() * sizeof(glm::vec4)), rgba.data());
+  // The face was drawn through a framebuffer: its first row is the bottom one.
+  ColorImage image(faceSize_, faceSize_);
+  for (int y = 0; y < faceSize_; ++y) {
+    for (int x = 0; x < faceSize_; ++x) {
+      image.at(x, y) = glm::vec3(rgba[size_t(faceSize_ - 1 - y) * size_t(faceSize_) + size_t(x)]);
+    }
+  }
+  return image;
 }
 
 void PanoramaCapturer::resampleToPanorama() {

@@ -7,7 +7,7 @@
 // Needs a current GL 4.5 context.
 
 #include "core/image/image.h"
-#include "render/capture/gpu_scene.h"
+#include "render/capture/scene_view_drawer.h"
 #include "render/gl/gl_objects.h"
 #include "render/gl/shader_program.h"
 #include "render/scene/scene.h"
@@ -37,10 +37,14 @@ public:
 
   int width() const { return width_; }
   int height() const { return width_ / 2; }
-  size_t sceneTriangles() const { return gpuScene_.triangleCount(); }
+  size_t sceneTriangles() const { return drawer_.sceneTriangles(); }
   // Triangles the last capture drew over its six cube faces: each only on
   // the faces it can show on (render/capture/cube_face_culling.h).
-  size_t trianglesDrawn() const { return gpuScene_.selectedTriangles(); }
+  size_t trianglesDrawn() const { return drawer_.selectedTriangles(); }
+  // The linear colour of one cube face of the last capture (GL's face
+  // order), top row first, as drawn before the resampling: what a truth
+  // frame of the same pose must equal.
+  ColorImage cubeFaceColor(int face) const;
 
 private:
   void renderCubeFaces(glm::vec3 position, GpuScene::Outputs outputs);
@@ -48,13 +52,9 @@ private:
   // One attachment of the panorama framebuffer, as floats.
   void readPanorama(GLenum attachment, GLenum format, void* pixels) const;
 
-  const Scene& scene_;
   int width_;
   int faceSize_;
-  GpuScene gpuScene_;
-  ShaderProgram sceneProgram_;
-  ShaderProgram distanceProgram_;  // captureDistance's: no shading
-  ShaderProgram skyProgram_;
+  SceneViewDrawer drawer_;
   ShaderProgram equirectProgram_;
   GlTexture colorCube_, planeCube_, distanceCube_, depth_;
   std::array<GlFramebuffer, 6> faceFramebuffers_;

@@ -41,6 +41,7 @@
   X(PFNGLGENERATETEXTUREMIPMAPPROC, glGenerateTextureMipmap)               \
   X(PFNGLBINDTEXTUREUNITPROC, glBindTextureUnit)                           \
   X(PFNGLGETTEXTUREIMAGEPROC, glGetTextureImage)                           \
+  X(PFNGLGETTEXTURESUBIMAGEPROC, glGetTextureSubImage)                     \
   X(PFNGLCREATESAMPLERSPROC, glCreateSamplers)                             \
   X(PFNGLDELETESAMPLERSPROC, glDeleteSamplers)                             \
   X(PFNGLSAMPLERPARAMETERIPROC, glSamplerParameteri)                       \

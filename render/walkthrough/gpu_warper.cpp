@@ -30,22 +30,6 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-glm::mat4 pinholeViewProjection(const PinholeCamera& camera, float near) {
-  const glm::vec3 r = camera.right(), u = camera.up(), f = camera.forward(), c = camera.position;
-  glm::mat4 view(1.0f);  // camera looks down -z, as OpenGL expects
-  view[0] = glm::vec4(r.x, u.x, -f.x, 0.0f);
-  view[1] = glm::vec4(r.y, u.y, -f.y, 0.0f);
-  view[2] = glm::vec4(r.z, u.z, -f.z, 0.0f);
-  view[3] = glm::vec4(-glm::dot(r, c), -glm::dot(u, c), glm::dot(f, c), 1.0f);
-  const float tanY = camera.tanHalfFovY();
-  glm::mat4 projection(0.0f);
-  projection[0][0] = 1.0f / (tanY * camera.aspect());
-  projection[1][1] = 1.0f / tanY;
-  projection[2][3] = -1.0f;
-  projection[3][2] = near;
-  return projection * view;
-}
-
 GpuWarper::GpuWarper(int width, int height)
     : gridLayerProgram_("warp_layer.vert", "warp_layer_grid.frag"),
       simplifiedLayerProgram_("warp_layer.vert", "warp_layer_simplified.frag"),

@@ -96,8 +96,4 @@ private:
   GlVertexArray vertexArray_;
 };
 
-// World -> clip for a pinhole camera, reversed depth (1 at the near plane,
-// 0 at infinity) with glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE).
-glm::mat4 pinholeViewProjection(const PinholeCamera& camera, float near);
-
 }  // namespace triwalk

@@ -230,7 +230,8 @@ TEST_CASE("an irregular data set without paths decimates, evaluates against ever
   const RunResult decimate = runTriwalk(directory, "decimate --quiet --target 6" + data + " --out " + selection.string());
   INFO("decimate: " << decimate.err);
   REQUIRE(decimate.status == 0);
-  const RunResult eval = runTriwalk(directory, "eval --quiet" + data + " --selection " + selection.string() + " --json " + rows.string());
+  const RunResult eval = runTriwalk(directory, "eval --quiet" + data + " --selection " + selection.string() + " --json " +
+                                                   rows.string() + " --baselines-out " + (directory / "baselines").string());
   INFO("eval: " << eval.err);
   REQUIRE(eval.status == 0);
   std::vector<std::string> methods;
@@ -267,6 +268,26 @@ TEST_CASE("an irregular data set without paths decimates, evaluates against ever
   REQUIRE(render.status == 0);
   CHECK(std::filesystem::exists(directory / "frames" / "frame_0000.png"));
   CHECK(std::filesystem::exists(directory / "frames" / "frame_0001.png"));
+
+  // --baselines-out: each baseline an ordinary selection of the same count,
+  // the very one eval judged (its probe errors again from the file).
+  for (const char* method : {"uniform", "kmedoids", "geodesic_kmedoids", "farthest_point", "random"}) {
+    INFO(method);
+    const std::filesystem::path file = directory / "baselines" / (std::string(method) + ".json");
+    const Selection baseline = readSelection(file, Dataset::open(directory / "data"));
+    CHECK(baseline.method == method);
+    const nlohmann::json again = nlohmann::json::parse(testing::readTextFileOrEmpty(rows));
+    for (const nlohmann::json& row : again["rows"]) {
+      if (row["method"] == method) CHECK(int(baseline.samples.size()) == row["samples"].get<int>());
+    }
+  }
+  const RunResult uniform = runTriwalk(directory, "eval --quiet" + data + " --selection " +
+                                                      (directory / "baselines" / "uniform.json").string() + " --json " +
+                                                      (directory / "uniform_rows.json").string());
+  INFO("eval of the uniform file: " << uniform.err);
+  REQUIRE(uniform.status == 0);
+  const nlohmann::json judged = nlohmann::json::parse(testing::readTextFileOrEmpty(directory / "uniform_rows.json"));
+  CHECK(judged["rows"][2]["probe_errors"] == document["rows"][1]["probe_errors"]);
 }
 
 TEST_CASE("suite: each count selected with the selection's blend weights and width, evaluated with the evaluation's") {

@@ -25,23 +25,47 @@ struct ViewerRun {
 };
 
 // `triwalk <arguments>` with stdout and stderr in one log; under a
-// virtual X server unless without a display.
+// virtual X server unless without a display. The viewer's preferences live
+// in the scratch folder, never in the home of whoever runs the tests.
 ViewerRun runTriwalk(const testing::TemporaryDirectory& scratch, const std::string& arguments, bool display = true) {
   const std::filesystem::path log = scratch / "log.txt";
-  const std::string command = std::string(display ? "xvfb-run -a -s '-screen 0 1280x800x24' " : "") + TRIWALK_BINARY + " " +
-                              arguments + " > " + log.string() + " 2>&1";
+  const std::string command = "XDG_CONFIG_HOME=" + (scratch / "config").string() + " " +
+                              std::string(display ? "xvfb-run -a -s '-screen 0 1280x800x24' " : "") + TRIWALK_BINARY +
+                              " " + arguments + " > " + log.string() + " 2>&1";
   const int status = std::system(command.c_str());
   return {status, testing::readTextFileOrEmpty(log)};
 }
 
+// Distinct colours in a rectangle of the image: the scene's smooth shading
+// gives hundreds, a clear colour or a panel's flat fill a few.
+size_t distinctColours(const Rgb8Image& image, int x0, int y0, int x1, int y1) {
+  std::set<uint32_t> colours;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      const glm::u8vec3 c = image.at(x, y);
+      colours.insert(uint32_t(c.r) << 16 | uint32_t(c.g) << 8 | c.b);
+    }
+  }
+  return colours.size();
+}
+
+// Pixels of the map's background (25, 25, 30) in a rectangle.
+size_t mapBackground(const Rgb8Image& image, int x0, int y0, int x1, int y1) {
+  size_t count = 0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) count += image.at(x, y) == glm::u8vec3(25, 25, 30);
+  }
+  return count;
+}
+
 }  // namespace
 
-TEST_CASE("the viewer under Xvfb shows the scene and its panels") {
+TEST_CASE("the viewer under Xvfb shows the scene and, with --sidebar shown, its tools beside it") {
   testing::TemporaryDirectory directory;
   testing::writeAnalyticDataset(directory / "data", 4, 3, 256, 1);
   const std::filesystem::path screenshot = directory / "viewer.png";
-  const ViewerRun run =
-      runTriwalk(directory, "view --dataset " + (directory / "data").string() + " --frames 8 --screenshot " + screenshot.string());
+  const ViewerRun run = runTriwalk(directory, "view --sidebar shown --dataset " + (directory / "data").string() +
+                                                  " --frames 8 --screenshot " + screenshot.string());
   INFO("log: " << run.log);
   REQUIRE(run.status == 0);
   CHECK(run.log.find("live decimation: errors at 256x128, centroid destinations; warp mesh (grazing-angle 4.0 deg, "
@@ -53,24 +77,53 @@ TEST_CASE("the viewer under Xvfb shows the scene and its panels") {
   CHECK(image.width == 1280);
   CHECK(image.height == 720);
 
-  // The walkthrough, right of the panels: the room's smooth colors, not
-  // the single clear color of an empty frame.
-  std::set<uint32_t> sceneColors;
-  for (int y = 620; y < 715; ++y) {
-    for (int x = 1020; x < 1275; ++x) {
-      const glm::u8vec3 c = image.at(x, y);
-      sceneColors.insert(uint32_t(c.r) << 16 | uint32_t(c.g) << 8 | c.b);
-    }
-  }
-  CHECK(sceneColors.size() > 200);
+  // The walkthrough, left of the sidebar (a third of the 1280 pixels): the
+  // room's smooth colours, not the single clear colour of an empty frame.
+  CHECK(distinctColours(image, 20, 620, 820, 715) > 200);
+  // The sidebar's map: its background fills most of its canvas, with the
+  // triangulation drawn over it; none of it over the scene.
+  CHECK(mapBackground(image, 860, 40, 1275, 140) > 2000);
+  CHECK(mapBackground(image, 0, 0, 850, 720) == 0);
+}
 
-  // The map panel: its background (25, 25, 30) fills most of its canvas,
-  // with the triangulation drawn over it.
-  size_t mapBackground = 0;
-  for (int y = 40; y < 280; ++y) {
-    for (int x = 20; x < 420; ++x) mapBackground += image.at(x, y) == glm::u8vec3(25, 25, 30);
+TEST_CASE("the viewer starts with the scene filling the window, and remembers the sidebar as it was left") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 4, 3, 256, 1);
+  const std::filesystem::path screenshot = directory / "viewer.png";
+  const std::string view = "view --dataset " + (directory / "data").string() + " --frames 4 --screenshot " + screenshot.string();
+  // First start, nothing kept: the scene everywhere, no tools.
+  const ViewerRun first = runTriwalk(directory, view);
+  INFO("log: " << first.log);
+  REQUIRE(first.status == 0);
+  const Rgb8Image whole = readPng(screenshot);
+  CHECK(distinctColours(whole, 900, 620, 1275, 715) > 200);
+  CHECK(mapBackground(whole, 0, 0, 1280, 720) == 0);
+  CHECK_FALSE(std::filesystem::exists(directory / "config" / "triwalk" / "viewer.json"));  // a scripted run keeps nothing
+
+  // As Tab leaves it: shown.
+  std::filesystem::create_directories(directory / "config" / "triwalk");
+  writeTextFileAtomically(directory / "config" / "triwalk" / "viewer.json", "{\"sidebar\": true}\n");
+  REQUIRE(runTriwalk(directory, view).status == 0);
+  CHECK(mapBackground(readPng(screenshot), 860, 40, 1275, 140) > 2000);
+  // --sidebar hidden overrides what was kept.
+  REQUIRE(runTriwalk(directory, view + " --sidebar hidden").status == 0);
+  CHECK(mapBackground(readPng(screenshot), 0, 0, 1280, 720) == 0);
+  // A damaged file: one line, and the defaults.
+  writeTextFileAtomically(directory / "config" / "triwalk" / "viewer.json", "{\"sidebar\": ");
+  const ViewerRun damaged = runTriwalk(directory, view);
+  REQUIRE(damaged.status == 0);
+  CHECK(damaged.log.find("viewer.json: not the viewer's preferences") != std::string::npos);
+  CHECK(mapBackground(readPng(screenshot), 0, 0, 1280, 720) == 0);
+}
+
+TEST_CASE("view --help lists every key and mouse control") {
+  testing::TemporaryDirectory directory;
+  const ViewerRun help = runTriwalk(directory, "view --help", false);
+  REQUIRE(help.status == 0);
+  for (const char* control : {"W A S D, arrow keys", "Shift", "drag", "Tab", "F1 or ?", "F12", "click on the map"}) {
+    CHECK(help.log.find(control) != std::string::npos);
   }
-  CHECK(mapBackground > 2000);
+  CHECK(help.log.find("--sidebar") != std::string::npos);
 }
 
 TEST_CASE("the live decimation goes on with the errors and the cost a selection was made with, and bad ones fail early") {

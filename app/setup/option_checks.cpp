@@ -153,7 +153,9 @@ void hideIn(CLI::App& command, const std::shared_ptr<CLI::Formatter>& formatter)
   const std::vector<CLI::Option*> options = command.get_options();
   if (std::any_of(options.begin(), options.end(),
                   [](const CLI::Option* option) { return kExpertOptions.count(option->get_name(false, true)) > 0; })) {
-    command.footer("Options that tune the method (warp, blend and error constants, other collapse rules): --help-all");
+    const std::string hint = "Options that tune the method (warp, blend and error constants, other collapse rules): --help-all";
+    const std::string own = command.get_footer();  // a command's own footer (view's controls) stays first
+    command.footer(own.empty() ? hint : own + "\n" + hint);
   }
   for (CLI::App* subcommand : command.get_subcommands([](CLI::App*) { return true; })) hideIn(*subcommand, formatter);
 }

@@ -2,7 +2,7 @@
 // them), forward and back, run to an error threshold or a sample count, see
 // the cost of each step, save.
 
-#include "app/viewer/panel_window.h"
+#include "app/viewer/sidebar.h"
 #include "app/viewer/viewer_state.h"
 #include "core/support/errors.h"
 
@@ -14,7 +14,7 @@
 namespace triwalk {
 
 void drawDecimationPanel(ViewerState& state) {
-  if (!beginPanelWindow("Decimation", ImVec2(10, 320), ImVec2(420, 330))) return;
+  if (!beginSidebarSection("Decimation")) return;
   const DecimationSession::Snapshot& s = state.snapshot;
   DecimationSession& session = *state.session;
   ImGui::Text("samples %d   triangles %zu   step %d of %d logged", s.samples, s.triangles.size(), s.step, s.logSize);
@@ -95,7 +95,6 @@ void drawDecimationPanel(ViewerState& state) {
                        "follow when they are in");
   }
   if (!state.message.empty()) ImGui::TextWrapped("%s", state.message.c_str());
-  ImGui::End();
 }
 
 }  // namespace triwalk

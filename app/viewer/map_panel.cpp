@@ -3,13 +3,14 @@
 // where they look, the triangle they stand in; a click selects a triangle
 // for the inspector.
 
-#include "app/viewer/panel_window.h"
+#include "app/viewer/sidebar.h"
 #include "app/viewer/viewer_state.h"
 #include "core/geometry/walkable_region.h"
 #include "core/image/color.h"
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -27,7 +28,7 @@ ImU32 toImColor(glm::vec3 color, float alpha = 1.0f) {
 }  // namespace
 
 void drawMapPanel(ViewerState& state) {
-  if (!beginPanelWindow("Map", ImVec2(10, 10), ImVec2(420, 300))) return;
+  if (!beginSidebarSection("Map")) return;
   const Dataset& dataset = *state.dataset;
   glm::vec2 lower(1e30f), upper(-1e30f);
   for (int i = 0; i < dataset.sampleCount(); ++i) {
@@ -38,8 +39,10 @@ void drawMapPanel(ViewerState& state) {
   lower -= margin;
   upper += margin;
 
-  const ImVec2 available = ImGui::GetContentRegionAvail();
-  const ImVec2 canvasSize(std::max(available.x, 50.0f), std::max(available.y - 24.0f, 50.0f));
+  // As wide as the sidebar, as high as the samples' extent asks (within
+  // reason), so that the sections below stay in sight.
+  const float width = std::max(ImGui::GetContentRegionAvail().x, 50.0f);
+  const ImVec2 canvasSize(width, std::clamp(width * (upper.y - lower.y) / (upper.x - lower.x), 120.0f, 320.0f));
   const float scale = std::min(canvasSize.x / (upper.x - lower.x), canvasSize.y / (upper.y - lower.y));
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton("map", canvasSize);
@@ -122,7 +125,11 @@ void drawMapPanel(ViewerState& state) {
   std::snprintf(label, sizeof label, "triangle error E: 0 .. %.0f", kErrorScale);
   draw->AddText(ImVec2(legend.x + legendWidth + 8, legend.y + 2), IM_COL32(230, 230, 230, 255), label);
   ImGui::Dummy(ImVec2(canvasSize.x, 20));
-  ImGui::End();
+  if (state.selectedTriangle < 0) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("Click a triangle to inspect how its panoramas reconstruct a view.");
+    ImGui::PopTextWrapPos();
+  }
 }
 
 }  // namespace triwalk

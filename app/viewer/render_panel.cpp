@@ -2,7 +2,7 @@
 // stretch test, hole display, which reference made each pixel; frame rate
 // and the working set.
 
-#include "app/viewer/panel_window.h"
+#include "app/viewer/sidebar.h"
 #include "app/viewer/viewer_state.h"
 
 #include <imgui.h>
@@ -10,7 +10,7 @@
 namespace triwalk {
 
 void drawRenderPanel(ViewerState& state) {
-  if (!beginPanelWindow("Render", ImVec2(440, 270), ImVec2(520, 330))) return;
+  if (!beginSidebarSection("Render")) return;
   ImGui::Text("%.1f fps, frame %.1f ms (%.2f M triangles)", state.smoothedFrameSeconds > 0.0 ? 1.0 / state.smoothedFrameSeconds : 0.0,
               state.frameMilliseconds,
               double(state.frame.trianglesDrawn) / 1e6);
@@ -55,7 +55,6 @@ void drawRenderPanel(ViewerState& state) {
               state.walk.pitchDegrees);
   if (ImGui::Button("screenshot (F12)")) state.screenshotRequested = true;
   ImGui::TextDisabled("W A S D / arrows: walk, Shift: run, drag: look around");
-  ImGui::End();
 }
 
 }  // namespace triwalk

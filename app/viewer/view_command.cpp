@@ -5,6 +5,7 @@
 #include "app/setup/quality_options.h"
 #include "app/setup/walkthrough_setup.h"
 #include "app/viewer/viewer_app.h"
+#include "app/viewer/viewer_controls.h"
 #include "core/selection/triangle_error.h"
 #include "core/support/errors.h"
 
@@ -12,7 +13,7 @@ namespace triwalk {
 
 void registerViewCommand(CLI::App& app) {
   struct Arguments {
-    std::string dataset, selection, size = "1280x720", screenshot, path;
+    std::string dataset, selection, size = "1280x720", screenshot, path, sidebar = "remembered";
     int frames = 0;
     int errorWidth = 0, errorStride = 0;
     size_t cacheMegabytes = 1024;
@@ -33,6 +34,11 @@ void registerViewCommand(CLI::App& app) {
                       "column of the error panorama, as decimate's --error-stride (2: about 2.6x the collapses a "
                       "second, at a measured cost in quality: docs/history/RESULTS-2026-11.md); default: the selection's, else 1")
       ->check(errorStride());
+  command->add_option("--sidebar", arguments->sidebar,
+                      "The tools sidebar at start: shown, hidden, or as you left it (Tab switches; kept in "
+                      "$XDG_CONFIG_HOME/triwalk/viewer.json)")
+      ->capture_default_str()->check(CLI::IsMember({"shown", "hidden", "remembered"}));
+  command->footer(describeViewerControls());
   command->add_option("--frames", arguments->frames, "Render this many frames, write --screenshot and exit");
   command->add_option("--screenshot", arguments->screenshot, "With --frames: PNG of the window at the last frame")->check(writableFile());
   command->add_option("--path", arguments->path, "With --frames: camera path file (x y z yaw pitch a line)");
@@ -50,6 +56,7 @@ void registerViewCommand(CLI::App& app) {
     options.errorWidth = a.errorWidth;
     options.errorStride = a.errorStride;
     options.synthesis = synthesisOptions(a.quality);
+    if (a.sidebar != "remembered") options.sidebar = a.sidebar == "shown";
     options.frames = a.frames;
     options.screenshot = a.screenshot;
     if (!a.path.empty()) options.path = readCameraPath(a.path);

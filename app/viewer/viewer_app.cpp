@@ -6,6 +6,9 @@
 
 #include "app/setup/decimation_options.h"
 #include "app/setup/walkthrough_setup.h"
+#include "app/viewer/sidebar.h"
+#include "app/viewer/viewer_controls.h"
+#include "app/viewer/viewer_preferences.h"
 #include "app/viewer/viewer_state.h"
 #include "core/io/png_io.h"
 #include "core/selection/selection.h"
@@ -118,20 +121,29 @@ public:
     state_.grazingAngleDegrees = options.synthesis.warp.grazingAngleDegrees;
     state_.walk.position = startPosition(state_.mesh, sampleEyeHeight(dataset_));
     warpOptions_ = options.synthesis.warp;
+    state_.sidebar = options.sidebar.value_or(preferences_.sidebar);
     openWorkingSet();
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini beside the data
     ImGui::StyleColorsDark();
-    // F12 through a key callback, not ImGui::IsKeyPressed: ImGui 1.86 keeps
-    // only the key state per frame, so a tap shorter than a frame (often, at
-    // llvmpipe's 70 ms) would be lost. ImGui's backend chains to this one.
+    // F12, Tab, F1 and ? through GLFW's callbacks, not ImGui::IsKeyPressed:
+    // ImGui 1.86 keeps only the key state per frame, so a tap shorter than a
+    // frame (often, at llvmpipe's 70 ms) would be lost. ImGui's backend
+    // chains to these. A key typed into a text field stays there.
     glfwSetWindowUserPointer(context_.window(), this);
     glfwSetKeyCallback(context_.window(), [](GLFWwindow* window, int key, int, int action, int) {
-      if (key == GLFW_KEY_F12 && action == GLFW_PRESS) {
-        static_cast<Viewer*>(glfwGetWindowUserPointer(window))->state_.screenshotRequested = true;
-      }
+      if (action != GLFW_PRESS) return;
+      Viewer& viewer = *static_cast<Viewer*>(glfwGetWindowUserPointer(window));
+      if (key == GLFW_KEY_F12) viewer.state_.screenshotRequested = true;
+      if (ImGui::GetIO().WantTextInput) return;
+      if (key == GLFW_KEY_TAB) viewer.toggleSidebar();
+      if (key == GLFW_KEY_F1) viewer.state_.help = !viewer.state_.help;
+    });
+    glfwSetCharCallback(context_.window(), [](GLFWwindow* window, unsigned int codepoint) {
+      Viewer& viewer = *static_cast<Viewer*>(glfwGetWindowUserPointer(window));
+      if (codepoint == '?' && !ImGui::GetIO().WantTextInput) viewer.state_.help = !viewer.state_.help;
     });
     ImGui_ImplGlfw_InitForOpenGL(context_.window(), true);
     ImGui_ImplOpenGL3_Init("#version 450");
@@ -162,10 +174,19 @@ public:
 
       update(seconds, frame, scripted, finalFrame);
       renderWalkthrough(finalFrame);
-      drawMapPanel(state_);
-      drawDecimationPanel(state_);
-      drawInspectorPanel(state_);
-      drawRenderPanel(state_);
+      const ImVec2 display = ImGui::GetIO().DisplaySize;
+      if (state_.sidebar) {
+        beginSidebar(display);
+        drawMapPanel(state_);
+        drawDecimationPanel(state_);
+        drawInspectorPanel(state_);
+        drawRenderPanel(state_);
+        ImGui::End();
+      } else {
+        ImGui::GetForegroundDrawList()->AddText(ImVec2(10.0f, 8.0f), IM_COL32(255, 255, 255, 160),
+                                                "Tab: tools    F1: keys");
+      }
+      if (state_.help) drawHelpOverlay(display);
       drawLoadingNotice();
 
       ImGui::Render();
@@ -183,6 +204,38 @@ public:
   }
 
 private:
+  void toggleSidebar() {
+    state_.sidebar = !state_.sidebar;
+    preferences_.sidebar = state_.sidebar;
+    writeViewerPreferences(preferences_);
+  }
+
+  // The window's pixels the 3D view takes: all of it, or left of the sidebar.
+  int viewWidth(int framebufferWidth) const {
+    if (!state_.sidebar) return framebufferWidth;
+    const ImGuiIO& io = ImGui::GetIO();
+    return std::max(16, framebufferWidth - int(sidebarWidth(io.DisplaySize) * io.DisplayFramebufferScale.x));
+  }
+
+  void drawHelpOverlay(ImVec2 display) {
+    const float left = state_.sidebar ? display.x - sidebarWidth(display) : display.x;
+    ImGui::SetNextWindowPos(ImVec2(0.5f * left, 0.5f * display.y), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    if (ImGui::Begin("Keys and mouse (F1 or ? closes)", &state_.help,
+                     ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings) &&
+        ImGui::BeginTable("controls", 2, ImGuiTableFlags_RowBg)) {
+      for (const ViewerControl& control : viewerControls()) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(control.keys);
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(control.action);
+      }
+      ImGui::EndTable();
+    }
+    ImGui::End();
+  }
+
   void update(double seconds, int frame, bool scripted, bool finalFrame) {
     const ImGuiIO& io = ImGui::GetIO();
     if (scripted && !options_.path.empty()) {
@@ -247,9 +300,10 @@ private:
   // once nothing does, one frame at the full render scale, then that frame
   // stays on screen without drawing it again.
   void renderWalkthrough(bool finalFrame) {
-    int width = 0, height = 0;
-    context_.framebufferSize(width, height);
-    if (width <= 0 || height <= 0) return;
+    int windowWidth = 0, height = 0;
+    context_.framebufferSize(windowWidth, height);
+    if (windowWidth <= 0 || height <= 0) return;
+    const int width = viewWidth(windowWidth);
     PinholeCamera camera;
     camera.verticalFovDegrees = state_.verticalFovDegrees;
     camera.position = state_.walk.position;
@@ -289,7 +343,7 @@ private:
     }
 
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, width, height);
+    glViewport(0, 0, windowWidth, height);
     glClearColor(0.08f, 0.08f, 0.1f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     if (state_.referencesAvailable > 0) {
@@ -302,9 +356,10 @@ private:
   void drawLoadingNotice() {
     if (state_.referencesAvailable >= 3) return;
     const ImVec2 size = ImGui::GetIO().DisplaySize;
+    const float left = state_.sidebar ? size.x - sidebarWidth(size) : size.x;
     char text[96];
     std::snprintf(text, sizeof text, "loading %d of the 3 panoramas...", 3 - state_.referencesAvailable);
-    ImGui::GetForegroundDrawList()->AddText(ImVec2(size.x * 0.5f - 100.0f, size.y - 40.0f), IM_COL32(255, 200, 80, 255), text);
+    ImGui::GetForegroundDrawList()->AddText(ImVec2(left * 0.5f - 100.0f, size.y - 40.0f), IM_COL32(255, 200, 80, 255), text);
   }
 
   void saveScreenshot(bool scriptedFinal) {
@@ -330,6 +385,7 @@ private:
   WarpOptions warpOptions_;
   std::unique_ptr<PanoramaCache> cache_;
   std::unique_ptr<WalkthroughRenderer> renderer_;
+  ViewerPreferences preferences_ = readViewerPreferences();
   ViewerState state_;
   WalkController walk_;
   FrameScaleController frameScale_{kWalkFrameBudgetMilliseconds, kMinimumWalkingScale};

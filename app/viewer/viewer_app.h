@@ -5,6 +5,7 @@
 #include "core/synthesis/view_synthesis.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,9 @@ struct ViewerOptions {
   int frames = 0;
   std::filesystem::path screenshot;
   std::vector<CameraPose> path;
+  // The tools sidebar at start; unset: as the person left it last time
+  // (app/viewer/viewer_preferences.h).
+  std::optional<bool> sidebar;
 };
 
 // Returns the process exit status.

@@ -62,6 +62,8 @@ struct ViewerState {
   PanoramaCache::Statistics cache;
   GpuFrameStatistics frame;
 
+  bool sidebar = false;  // the tools beside the 3D view (Tab)
+  bool help = false;     // the list of keys over the view (F1, ?)
   bool screenshotRequested = false;
   std::string screenshotPath;
 };

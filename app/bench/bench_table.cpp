@@ -55,6 +55,7 @@ std::string formatNumber(double value, int decimals) {
 }
 
 std::string formatMedianAndP95(std::vector<double> milliseconds) {
+  if (milliseconds.empty()) return "none timed";
   std::sort(milliseconds.begin(), milliseconds.end());
   const size_t n = milliseconds.size();
   return formatNumber(milliseconds[n / 2], 1) + " / " + formatNumber(milliseconds[std::min(n - 1, n * 95 / 100)], 1) + " ms";

@@ -19,6 +19,9 @@ struct Walk {
   std::vector<double> milliseconds;
   double meanScale = 0.0;
   int incomplete = 0;  // frames drawn with a reference still loading
+  // Frames with none of their references yet: nothing is drawn, so they are
+  // not timed (a walk that outruns the loader would otherwise show 0 ms).
+  int empty = 0;
   PanoramaCache::Statistics cache;
 };
 
@@ -44,8 +47,12 @@ Walk walk(const Dataset& dataset, const ViewMesh& mesh, const std::vector<Camera
     const WalkthroughRenderer::Frame frame = renderer.render(camera, GpuWarpSettings{}, false, false, scale);
     glFinish();
     const double elapsed = secondsSince(start);
-    if (frame.available > 0) frameScale.record(scale, 1000.0 * elapsed, frame.available == 3);
-    result.milliseconds.push_back(1000.0 * elapsed);
+    if (frame.available > 0) {
+      frameScale.record(scale, 1000.0 * elapsed, frame.available == 3);
+      result.milliseconds.push_back(1000.0 * elapsed);
+    } else {
+      ++result.empty;
+    }
     result.meanScale += scale / double(poses.size());
     result.incomplete += frame.available < 3;
     // The walk advances at 30 frames a second at most, as a display would.
@@ -64,6 +71,7 @@ Walk pooled(const std::vector<Walk>& walks) {
     all.milliseconds.insert(all.milliseconds.end(), one.milliseconds.begin(), one.milliseconds.end());
     all.meanScale += one.meanScale / double(walks.size());
     all.incomplete += one.incomplete;
+    all.empty += one.empty;
     all.cache.hits += one.cache.hits;
     all.cache.misses += one.cache.misses;
     all.cache.meshesRead += one.cache.meshesRead;
@@ -165,8 +173,12 @@ void benchViewer(BenchTable& table, const Dataset& dataset, const std::string& s
                            std::to_string(mesh.vertexCount()) + " references of " + std::to_string(dataset.manifest().width) +
                            "x" + std::to_string(dataset.manifest().height);
   const auto loading = [](const Walk& result) {
-    return std::to_string(result.incomplete) + " frames drawn with a reference still loading; working set " +
-           std::to_string(result.cache.misses) + " misses, " + std::to_string(result.cache.hits) + " hits";
+    const std::string empty = result.empty > 0 ? ", " + std::to_string(result.empty) +
+                                                     " of them with none of their references yet (nothing drawn, not timed)"
+                                               : std::string();
+    return std::to_string(result.incomplete) + " frames drawn with a reference still loading" + empty +
+           "; working set " + std::to_string(result.cache.misses) + " misses, " + std::to_string(result.cache.hits) +
+           " hits";
   };
   const auto addBudgetRow = [&](const std::string& name, const Walk& result, const std::string& more) {
     table.add({"viewer frame time walking, " + name + "frame budget " + formatNumber(kWalkFrameBudgetMilliseconds, 0) +

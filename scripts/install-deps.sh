@@ -14,6 +14,7 @@ packages=(
   libimgui-dev libstb-dev libpng-dev libopenexr-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libassimp-dev libmeshoptimizer-dev libminizip-dev libxxhash-dev libtbb-dev libcli11-dev nlohmann-json3-dev doctest-dev
   libopenmpi-dev openmpi-bin
+  libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
   xvfb xauth
 )
 if [[ "$profile" == "test" ]]; then

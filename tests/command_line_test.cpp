@@ -2,6 +2,7 @@
 // stderr and a non-zero status before any work, leaving no output behind;
 // defaults fit the data set they are given.
 
+#include "app/video/video_file.h"
 #include "core/io/atomic_file.h"
 #include "core/io/dataset.h"
 #include "core/selection/selection.h"
@@ -521,6 +522,45 @@ TEST_CASE("render --truth: from a sample's own position with every sample, frame
   CHECK(refused.err.find("keeps no scene to render the truth from") != std::string::npos);
   CHECK(std::count(refused.err.begin(), refused.err.end(), '\n') == 1);
   CHECK_FALSE(std::filesystem::exists(directory / "none"));
+}
+
+
+TEST_CASE("render --video encodes every frame at the asked rate into a file that decodes, and refuses an odd size or an unknown container before any frame") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 3, 3, 128, 0);
+  const std::string render = "render --dataset " + (directory / "data").string() + " --frames 12 --size 160x96";
+  const std::filesystem::path videos = directory / "videos";
+  std::filesystem::create_directories(videos);
+  const RunResult run = runTriwalk(directory, render + " --fps 24 --video " + (videos / "walk.mp4").string(), true);
+  INFO(run.err);
+  REQUIRE(run.status == 0);
+  const VideoInfo info = readVideoInfo(videos / "walk.mp4");
+  CHECK(info.frames == 12);
+  CHECK(info.width == 160);
+  CHECK(info.height == 96);
+  CHECK(info.seconds == doctest::Approx(0.5).epsilon(0.01));  // 12 frames of 1/24 s, the last one too
+  CHECK(run.out.find("wrote " + (videos / "walk.mp4").string() + ": 12 frames of 160x96 at 24 a second") != std::string::npos);
+  // With --out too: the frames and the video.
+  REQUIRE(runTriwalk(directory, render + " --out " + (directory / "frames").string() + " --video " +
+                                    (videos / "both.mkv").string(), true).status == 0);
+  CHECK(std::filesystem::exists(directory / "frames" / "frame_0011.png"));
+  CHECK(readVideoInfo(videos / "both.mkv").frames == 12);
+
+  // Refused before any frame, and nothing left behind.
+  const RunResult odd = runTriwalk(directory, "render --dataset " + (directory / "data").string() +
+                                                  " --frames 12 --size 161x96 --video " + (videos / "odd.mp4").string(), true);
+  CHECK(odd.status != 0);
+  CHECK(odd.err.find("odd.mp4: a video needs an even width and height, got 161x96") != std::string::npos);
+  const RunResult unknown = runTriwalk(directory, render + " --video " + (videos / "walk.xyz").string(), true);
+  CHECK(unknown.status != 0);
+  CHECK(unknown.err.find("walk.xyz: no video container for its extension") != std::string::npos);
+  const RunResult neither = runTriwalk(directory, render, true);
+  CHECK(neither.status != 0);
+  CHECK(neither.err.find("--out: give a directory for the frames, or --video FILE") != std::string::npos);
+  std::vector<std::string> left;
+  for (const auto& entry : std::filesystem::directory_iterator(videos)) left.push_back(entry.path().filename().string());
+  std::sort(left.begin(), left.end());
+  CHECK(left == std::vector<std::string>{"both.mkv", "walk.mp4"});
 }
 
 }  // namespace triwalk

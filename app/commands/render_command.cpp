@@ -7,6 +7,7 @@
 #include "app/setup/quality_options.h"
 #include "app/setup/scene_loading.h"
 #include "app/setup/walkthrough_setup.h"
+#include "app/video/video_file.h"
 #include "core/image/image_annotation.h"
 #include "core/image/image_compare.h"
 #include "core/io/camera_path.h"
@@ -95,7 +96,8 @@ constexpr int kMaxPresetFrames = 108000;
 
 void registerRenderCommand(CLI::App& app) {
   struct Arguments {
-    std::string dataset, selection, path = "rotate", out, size = "1280x720", gl = "auto", stats;
+    std::string dataset, selection, path = "rotate", out, size = "1280x720", gl = "auto", stats, video;
+    int fps = 30;
     float fov = 60.0f, pitch = 0.0f;
     std::vector<float> at, from, to, yaw;
     int frames = 0;
@@ -113,7 +115,13 @@ void registerRenderCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--out", arguments->out,
                       "Directory for frame_NNNN.png, replaced as a whole (an existing one must be empty or hold an "
-                      "earlier render)")->required()->check(writableDirectory());
+                      "earlier render); optional with --video")->check(writableDirectory());
+  command->add_option("--video", arguments->video,
+                      "Also (or, without --out, only) encode the frames as a video: H.264 in the container the "
+                      "extension names (.mp4, .mkv, .mov), written whole or not at all")
+      ->check(writableFile());
+  command->add_option("--fps", arguments->fps, "Frames a second of --video (the path's poses are its frames)")
+      ->capture_default_str()->check(CLI::Range(1, 240));
   command->add_option("--size", arguments->size, "Frame size WIDTHxHEIGHT")->capture_default_str();
   command->add_option("--fov", arguments->fov, "Vertical field of view, degrees")
       ->capture_default_str()->check(CLI::Range(10.0f, 150.0f));
@@ -142,6 +150,10 @@ void registerRenderCommand(CLI::App& app) {
 
   command->callback([arguments] {
     const Arguments& a = *arguments;
+    if (a.out.empty() && a.video.empty()) throw InputError("--out", "give a directory for the frames, or --video FILE");
+    if (a.out.empty() && (a.compare || a.truth)) {
+      throw InputError("--out", "--compare and --truth write their images beside the frames: give --out DIR");
+    }
     const Dataset dataset = Dataset::open(a.dataset);
     ViewMesh mesh = walkthroughMesh(dataset, a.selection);
     // Before any frame: a data set that keeps no scene is said in one line.
@@ -194,7 +206,10 @@ void registerRenderCommand(CLI::App& app) {
     settings.blend = synthesis.blend;
     settings.holes = synthesis.holes;
     settings.showSources = a.showSources;
-    StagedDirectory staging(a.out, kRenderOutputMarker, "an earlier render");
+    std::optional<StagedDirectory> staging;
+    if (!a.out.empty()) staging.emplace(a.out, kRenderOutputMarker, "an earlier render");
+    std::optional<VideoWriter> video;
+    if (!a.video.empty()) video.emplace(a.video, width, height, a.fps);
     std::map<int, std::unique_ptr<WarpSource>> cpuSources;
     nlohmann::json statistics = {{"holes", holeModeName(synthesis.holes)},
                                  {"blend_weights", blendWeightsName(synthesis.blend.weights)},
@@ -229,9 +244,10 @@ void registerRenderCommand(CLI::App& app) {
       char stem[64];
       std::snprintf(stem, sizeof stem, "frame_%04zu", i);
       auto write = [&](const std::string& suffix, const Rgb8Image& picture) {
-        staging.writeFile(stem + suffix, [&](const std::filesystem::path& path) { writePng(path, picture); });
+        if (staging) staging->writeFile(stem + suffix, [&](const std::filesystem::path& path) { writePng(path, picture); });
       };
       write(".png", image);
+      if (video) video->write(image);
       if (a.compare) {
         const Rgb8Image reference = cpuReference(dataset, frame.references, camera, synthesis, cpuSources);
         if (cpuSources.size() > 9) cpuSources.clear();
@@ -260,10 +276,17 @@ void registerRenderCommand(CLI::App& app) {
       progress.advance();
     }
     progress.finish();
-    staging.commit();
-    std::printf("rendered %zu frames %dx%d into %s (holes %s, %s weights), %.1f ms a frame with loading\n", poses.size(),
-                width, height, a.out.c_str(), holeModeName(synthesis.holes), blendWeightsName(synthesis.blend.weights),
-                frameMilliseconds / double(poses.size()));
+    if (video) video->commit();
+    if (staging) staging->commit();
+    std::printf("rendered %zu frames %dx%d%s%s (holes %s, %s weights), %.1f ms a frame with loading\n", poses.size(),
+                width, height, a.out.empty() ? "" : " into ", a.out.c_str(), holeModeName(synthesis.holes),
+                blendWeightsName(synthesis.blend.weights), frameMilliseconds / double(poses.size()));
+    if (video) {
+      // Read back: the file decodes, frame for frame.
+      const VideoInfo written = readVideoInfo(a.video);
+      std::printf("wrote %s: %d frames of %dx%d at %d a second, %.2f s (%s)\n", a.video.c_str(), written.frames,
+                  written.width, written.height, a.fps, written.seconds, video->codecName().c_str());
+    }
     if (truthRenderer) {
       const FrameScores scores = summarizeScores(truthPsnr, truthSsim);
       statistics["truth"] = {{"mean_psnr", scores.meanPsnr},   {"mean_ssim", scores.meanSsim},

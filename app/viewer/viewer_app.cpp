@@ -210,7 +210,10 @@ private:
     writeViewerPreferences(preferences_);
   }
 
-  // The window's pixels the 3D view takes: all of it, or left of the sidebar.
+  // How wide the 3D view is, in ImGui's units: the window, or left of the sidebar.
+  float sceneWidth(ImVec2 display) const { return state_.sidebar ? display.x - sidebarWidth(display) : display.x; }
+
+  // The same in the window's pixels.
   int viewWidth(int framebufferWidth) const {
     if (!state_.sidebar) return framebufferWidth;
     const ImGuiIO& io = ImGui::GetIO();
@@ -218,7 +221,7 @@ private:
   }
 
   void drawHelpOverlay(ImVec2 display) {
-    const float left = state_.sidebar ? display.x - sidebarWidth(display) : display.x;
+    const float left = sceneWidth(display);
     ImGui::SetNextWindowPos(ImVec2(0.5f * left, 0.5f * display.y), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowBgAlpha(0.85f);
     if (ImGui::Begin("Keys and mouse (F1 or ? closes)", &state_.help,
@@ -356,7 +359,7 @@ private:
   void drawLoadingNotice() {
     if (state_.referencesAvailable >= 3) return;
     const ImVec2 size = ImGui::GetIO().DisplaySize;
-    const float left = state_.sidebar ? size.x - sidebarWidth(size) : size.x;
+    const float left = sceneWidth(size);
     char text[96];
     std::snprintf(text, sizeof text, "loading %d of the 3 panoramas...", 3 - state_.referencesAvailable);
     ImGui::GetForegroundDrawList()->AddText(ImVec2(left * 0.5f - 100.0f, size.y - 40.0f), IM_COL32(255, 200, 80, 255), text);

@@ -9,6 +9,11 @@
 // -1 for holes) for the hole fill, the frame's display colour (holeColor
 // in holes), and depth 1 in holes, 0 elsewhere, so that the fill's last
 // pass runs on the holes alone.
+// The trust view (the viewer's T) colours each pixel by the sum of the
+// reliabilities of the layers within the blend interval, over 3: 1 where
+// all three references saw the surface well, 1/3 where one alone saw it
+// head-on, lower where what saw it saw it stretched; the scene's
+// brightness shades it so that the view stays legible. Holes are black.
 #include "display.glsl"
 #include "warp_layer_texel.glsl"
 uniform usampler2D layer0;
@@ -19,6 +24,7 @@ uniform vec3 weights;
 uniform bool reliabilityWeights;
 uniform float epsilon;
 uniform bool showSources;   // color by the references that contributed
+uniform bool showTrust;     // color by how much to trust the pixel (below)
 uniform vec3 holeColor;     // display colour
 layout(location = 0) out vec4 outValue;
 layout(location = 1) out vec4 outColor;
@@ -49,5 +55,10 @@ void main() {
   vec3 blended = (w.x * value0.color + w.y * value1.color + w.z * value2.color) / (w.x + w.y + w.z);
   outValue = vec4(showSources ? inInterval : blended, nearest);
   outColor = displayColor(outValue.rgb);
+  if (showTrust) {
+    float trust = dot(inInterval, vec3(value0.reliability, value1.reliability, value2.reliability)) / 3.0;
+    float brightness = dot(outColor.rgb, vec3(0.2126, 0.7152, 0.0722));
+    outColor = vec4(falseColor(trust) * (0.4 + 0.6 * brightness), 1.0);
+  }
   gl_FragDepth = 0.0;
 }

@@ -4,7 +4,7 @@
 
 #include "core/geometry/walkable_region.h"
 #include "core/import/pose_table.h"
-#include "core/io/camera_path.h"
+#include "core/io/camera_path_file.h"
 #include "core/io/dataset.h"
 #include "core/io/exr_io.h"
 #include "core/io/json_fields.h"
@@ -13,6 +13,8 @@
 #include "tests/test_support.h"
 
 #include <doctest/doctest.h>
+
+#include <cmath>
 
 #include <functional>
 #include <map>
@@ -37,7 +39,16 @@ TEST_CASE("inputs that crashed or hung a fuzzer are read or refused with a one-l
        }},
       {"exr", [](const std::filesystem::path& input) { readPanoramaExr(input); return input; }},
       {"selection", [&](const std::filesystem::path& input) { readSelection(input, dataset); return input; }},
-      {"camera_path", [](const std::filesystem::path& input) { readCameraPath(input); return input; }},
+      {"camera_path", [](const std::filesystem::path& input) {
+         // Read, then played as the harness plays it: every frame's pose finite.
+         const CameraPath path = readCameraPath(input);
+         if (frameCount(path, 30.0) <= 10000) {
+           for (const CameraPose& pose : framePoses(path, 30.0)) {
+             CHECK(std::isfinite(pose.position.x + pose.position.y + pose.position.z + pose.yawDegrees + pose.pitchDegrees));
+           }
+         }
+         return input;
+       }},
       {"pose_table", [](const std::filesystem::path& input) {
          readPoseTable(input, PoseMatrix::WorldToCamera, UpAxis::PlusY);
          return input;

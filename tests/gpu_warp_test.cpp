@@ -1,6 +1,7 @@
 // The GPU warp against the CPU reference, across OpenGL backends, and
 // against committed golden frames.
 
+#include "core/image/color.h"
 #include "core/image/image_compare.h"
 #include "core/io/dataset.h"
 #include "core/io/png_io.h"
@@ -14,6 +15,7 @@
 #include "render/scene/scene_description.h"
 #include "render/walkthrough/frame_scale.h"
 #include "render/walkthrough/gpu_warper.h"
+#include "render/walkthrough/panorama_overlay.h"
 #include "render/walkthrough/walkthrough_renderer.h"
 #include "tests/analytic_scene.h"
 #include "tests/test_support.h"
@@ -180,6 +182,81 @@ TEST_CASE("GPU and CPU blend with the same weights: reliability (the default) or
   // The choice changes the frame far more than GPU and CPU differ.
   CHECK(across < psnr(gpuReliable, cpuReliable.image) - 6.0);
   CHECK(psnr(cpuReliable.image, cpuDistance.image) < psnr(gpuReliable, cpuReliable.image) - 6.0);
+}
+
+TEST_CASE("the trust colouring: 1 where three references saw the surface head-on, 1/3 where one did, shaded by the scene") {
+  // References standing at the camera see every surface exactly as it does
+  // (reliability 1): trust is the count of them within the blend interval, over 3.
+  const testing::AnalyticScene scene = testing::stripedRoom();
+  const glm::vec3 position(0.0f, 3.0f, 1.5f);
+  const Reference reference{testing::renderPanorama(scene, position, 512), position};
+  PinholeCamera camera = testCamera(position, 90.0f, 160, 120);
+  auto context = createHeadlessContext();
+  const GpuPanorama panorama(preparePanorama(reference.panorama, 0.0f, WarpSource(reference.panorama, position, 0.0f, WarpOptions{})));
+  GpuWarper warper(camera.width, camera.height);
+  auto render = [&](int references, bool trust) {
+    const std::vector<const GpuPanorama*> pointers(size_t(references), &panorama);
+    GpuWarpSettings settings;
+    settings.showTrust = trust;
+    warper.render(camera, pointers, settings);
+    return warper.readPixels();
+  };
+  const Rgb8Image plain = render(3, false), three = render(3, true), one = render(1, true);
+  size_t checked = 0, wrong = 0;
+  for (int y = 0; y < plain.height; ++y) {
+    for (int x = 0; x < plain.width; ++x) {
+      const glm::vec3 scene01 = glm::vec3(plain.at(x, y)) / 255.0f;
+      const float shade = 0.4f + 0.6f * glm::dot(scene01, glm::vec3(0.2126f, 0.7152f, 0.0722f));
+      for (const auto& [image, trust] : {std::pair{&three, 1.0f}, std::pair{&one, 1.0f / 3.0f}}) {
+        const glm::vec3 expected = falseColor(trust) * shade * 255.0f;
+        const glm::vec3 got(image->at(x, y));
+        ++checked;
+        wrong += glm::any(glm::greaterThan(glm::abs(got - expected), glm::vec3(2.5f)));
+      }
+    }
+  }
+  INFO(wrong << " of " << checked << " pixels off by more than 2/255");
+  CHECK(wrong < checked / 100);
+  // Not the scene's colours: the trust colouring replaces them.
+  CHECK(psnr(plain, three) < 20.0);
+}
+
+TEST_CASE("the panorama overlay shows, at each pixel of a pinhole view, the panorama in that pixel's direction") {
+  // A panorama whose colour says where it is: red by column, green by row.
+  constexpr int kWidth = 64, kHeight = 32;
+  Rgb8Image panorama(kWidth, kHeight);
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) panorama.at(x, y) = glm::u8vec3(x * 4, y * 8, 128);
+  }
+  auto context = createHeadlessContext();
+  const GlTexture texture = createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(texture.get(), 1, GL_RGB8, kWidth, kHeight);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(texture.get(), 0, 0, 0, kWidth, kHeight, GL_RGB, GL_UNSIGNED_BYTE, panorama.pixels.data());
+  PinholeCamera camera = testCamera({1.0f, 2.0f, 1.5f}, 30.0f, 160, 90);
+  camera.pitchDegrees = 10.0f;
+  const float panoramaYaw = 20.0f;
+  GpuWarper target(camera.width, camera.height);  // its output framebuffer as the target
+  glBindFramebuffer(GL_FRAMEBUFFER, target.outputFramebuffer());
+  glViewport(0, 0, camera.width, camera.height);
+  PanoramaOverlay overlay;
+  overlay.draw(texture.get(), {kWidth, kHeight}, panoramaYaw, camera, camera.aspect(), 1.0f);
+  const Rgb8Image drawn = target.readPixels();
+  // The CPU's answer: the texel nearest the pixel's ray, through the
+  // capture's own projection; the GPU filters linearly between texels, a
+  // step of 4 in red and 8 in green.
+  const EquirectProjection projection{kWidth, kHeight, degreesToRadians(panoramaYaw)};
+  size_t wrong = 0;
+  for (int y = 0; y < camera.height; ++y) {
+    for (int x = 0; x < camera.width; ++x) {
+      const glm::vec2 point = projection.imagePoint(camera.rayDirection({float(x) + 0.5f, float(y) + 0.5f}));
+      const glm::vec2 expected(point.x * 4.0f - 2.0f, point.y * 8.0f - 4.0f);  // the texel centres' colours, interpolated
+      const glm::u8vec3 got = drawn.at(x, y);
+      wrong += std::abs(float(got.r) - expected.x) > 3.0f || std::abs(float(got.g) - expected.y) > 5.0f || got.b != 128;
+    }
+  }
+  INFO(wrong << " of " << camera.width * camera.height << " pixels away from the CPU's direction");
+  CHECK(wrong < size_t(camera.width * camera.height) / 200);
 }
 
 TEST_CASE("the walkthrough renderer draws the three references of the triangle around the camera") {

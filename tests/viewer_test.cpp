@@ -2,7 +2,9 @@
 // (xvfb-run): a few frames of a small data set, then its screenshot must
 // show the walkthrough and the panels; its live decimation's errors.
 
+#include "app/video/video_file.h"
 #include "core/io/atomic_file.h"
+#include "core/io/camera_path_file.h"
 #include "core/io/png_io.h"
 #include "tests/analytic_scene.h"
 #include "tests/test_support.h"
@@ -116,11 +118,127 @@ TEST_CASE("the viewer starts with the scene filling the window, and remembers th
   CHECK(mapBackground(readPng(screenshot), 0, 0, 1280, 720) == 0);
 }
 
+TEST_CASE("two scripted screenshots with the same arguments are identical, and --hide-ui takes the view alone") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 4, 3, 256, 1);
+  const std::string view = "view --dataset " + (directory / "data").string() + " --frames 6 --screenshot ";
+  // The sidebar shown: the map's colours, the decimation's state and the
+  // panels' text all wait for what they show.
+  REQUIRE(runTriwalk(directory, view + (directory / "a.png").string() + " --sidebar shown").status == 0);
+  REQUIRE(runTriwalk(directory, view + (directory / "b.png").string() + " --sidebar shown").status == 0);
+  const Rgb8Image a = readPng(directory / "a.png"), b = readPng(directory / "b.png");
+  CHECK(a.pixels == b.pixels);
+  CHECK(mapBackground(a, 860, 40, 1275, 140) > 2000);  // the tools are in it
+
+  // --hide-ui: the scene as without the sidebar, but for the hint at the top left.
+  REQUIRE(runTriwalk(directory, view + (directory / "plain.png").string() + " --sidebar hidden").status == 0);
+  REQUIRE(runTriwalk(directory, view + (directory / "alone.png").string() + " --hide-ui").status == 0);
+  const Rgb8Image plain = readPng(directory / "plain.png"), alone = readPng(directory / "alone.png");
+  REQUIRE(plain.width == alone.width);
+  size_t differing = 0, outsideHint = 0;
+  for (int y = 0; y < plain.height; ++y) {
+    for (int x = 0; x < plain.width; ++x) {
+      if (plain.at(x, y) == alone.at(x, y)) continue;
+      ++differing;
+      outsideHint += x > 260 || y > 30;
+    }
+  }
+  CHECK(differing > 100);  // the hint's letters
+  CHECK(outsideHint == 0);
+  const ViewerRun both = runTriwalk(directory, view + (directory / "c.png").string() + " --hide-ui --sidebar shown");
+  CHECK(both.status != 0);
+  CHECK(both.log.find("--hide-ui: shows no tools: leave out --sidebar shown") != std::string::npos);
+}
+
+TEST_CASE("a walk recorded in the viewer, saved, loaded and played passes through the recorded positions within 1 cm") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 4, 3, 256, 1);
+  // A walk with its times, a pause in it, turning through north.
+  CameraPath walk;
+  walk.poses = {{{0.2f, 0.2f, 1.6f}, 340.0f, 0.0f},
+                {{0.7f, 0.5f, 1.6f}, 10.0f, 5.0f},
+                {{1.2f, 0.4f, 1.6f}, 60.0f, 0.0f},
+                {{1.2f, 0.4f, 1.6f}, 60.0f, 0.0f},
+                {{1.5f, 0.1f, 1.6f}, 120.0f, -5.0f}};
+  walk.seconds = {0.0, 0.5, 1.0, 1.2, 1.5};
+  writeCameraPath(directory / "walk.txt", walk);
+  const std::string view = "view --hide-ui --dataset " + (directory / "data").string() + " --frames 50 --screenshot " +
+                           (directory / "shot.png").string();
+  // Played from the file while recording: frame k shows, and records, the
+  // walk at k/30 s.
+  const ViewerRun first = runTriwalk(directory, view + " --path " + (directory / "walk.txt").string() + " --record " +
+                                                    (directory / "recorded.txt").string());
+  INFO("log: " << first.log);
+  REQUIRE(first.status == 0);
+  CHECK(first.log.find("saved the walk") != std::string::npos);
+  const CameraPath recorded = readCameraPath(directory / "recorded.txt");
+  REQUIRE(recorded.timed());
+  CHECK(pathDuration(recorded, 30.0) == doctest::Approx(49.0 / 30.0).epsilon(1e-4));
+  for (size_t i = 0; i < walk.poses.size(); ++i) {
+    INFO("pose " << i);
+    CHECK(glm::distance(poseAt(recorded, walk.seconds[i], 30.0).position, walk.poses[i].position) < 0.01f);
+  }
+  // The recording played back and recorded again passes through every recorded position.
+  const ViewerRun second = runTriwalk(directory, view + " --path " + (directory / "recorded.txt").string() +
+                                                     " --record " + (directory / "again.txt").string());
+  REQUIRE(second.status == 0);
+  const CameraPath again = readCameraPath(directory / "again.txt");
+  for (size_t i = 0; i < recorded.poses.size(); ++i) {
+    INFO("recorded pose " << i << " at " << recorded.seconds[i] << " s");
+    CHECK(glm::distance(poseAt(again, recorded.seconds[i], 30.0).position, recorded.poses[i].position) < 0.01f);
+  }
+  // The same walk in a video, at its recorded speed: 1.63 s at 10 frames a second.
+  const ViewerRun video = runTriwalk(directory, "render --dataset " + (directory / "data").string() + " --path " +
+                                                    (directory / "recorded.txt").string() + " --size 160x96 --fps 10 "
+                                                    "--video " + (directory / "walk.mp4").string(), false);
+  INFO("log: " << video.log);
+  REQUIRE(video.status == 0);
+  const VideoInfo info = readVideoInfo(directory / "walk.mp4");
+  CHECK(info.frames == 18);  // 0 .. 1.6 s every 0.1 s, then the end at 1.633 s
+  CHECK(info.seconds == doctest::Approx(1.8).epsilon(0.01));
+}
+
+TEST_CASE("the view's overlays: trust everywhere, and the error against a sample only near one") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 4, 3, 256, 1);  // samples 4/3 m apart in x, 1 m in y
+  // Near the sample at (4/3, 1), and in the middle of a cell, 0.83 m from every sample.
+  for (const auto& [name, pose] : {std::pair{"near", "1.40 1.05 1.5 20 0"}, std::pair{"far", "2.0 0.5 1.5 20 0"}}) {
+    writeTextFileAtomically(directory / (std::string(name) + ".txt"), std::string(pose) + "\n");
+  }
+  auto shot = [&](const std::string& at, const std::string& overlay) {
+    const std::filesystem::path file = directory / (at + "_" + overlay + ".png");
+    const ViewerRun run = runTriwalk(directory, "view --hide-ui --dataset " + (directory / "data").string() + " --frames 4 --path " +
+                                                   (directory / (at + ".txt")).string() + " --overlay " + overlay +
+                                                   " --screenshot " + file.string());
+    INFO("log: " << run.log);
+    REQUIRE(run.status == 0);
+    return readPng(file);
+  };
+  // Pixels that differ, outside the colour bar's corner (bottom left).
+  auto differing = [](const Rgb8Image& a, const Rgb8Image& b) {
+    size_t count = 0;
+    for (int y = 0; y < a.height - 90; ++y) {
+      for (int x = 0; x < a.width; ++x) count += a.at(x, y) != b.at(x, y);
+    }
+    return double(count) / double(a.width * (a.height - 90));
+  };
+  const Rgb8Image nearPlain = shot("near", "none"), farPlain = shot("far", "none");
+  CHECK(differing(nearPlain, shot("near", "trust")) > 0.8);
+  CHECK(differing(nearPlain, shot("near", "error")) > 0.8);
+  CHECK(differing(farPlain, shot("far", "error")) == 0.0);  // no sample within 0.5 m: the scene alone, and the note
+  // The colour bar is there whenever an overlay is.
+  const Rgb8Image farError = shot("far", "error");
+  size_t barPixels = 0;
+  for (int x = 0; x < 400; ++x) barPixels += farError.at(x, 720 - 40) != farPlain.at(x, 720 - 40);
+  CHECK(barPixels > 200);
+}
+
 TEST_CASE("view --help lists every key and mouse control") {
   testing::TemporaryDirectory directory;
   const ViewerRun help = runTriwalk(directory, "view --help", false);
   REQUIRE(help.status == 0);
-  for (const char* control : {"W A S D, arrow keys", "Shift", "drag", "Tab", "F1 or ?", "F12", "click on the map"}) {
+  for (const char* control : {"W A S D, arrow keys", "Shift", "drag", "Tab", "F1 or ?", "F12", "click on the map", "N, B",
+                              "play the walk", "record the walk", "Esc", "T", "E"}) {
     CHECK(help.log.find(control) != std::string::npos);
   }
   CHECK(help.log.find("--sidebar") != std::string::npos);

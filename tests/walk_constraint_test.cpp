@@ -63,4 +63,21 @@ TEST_CASE("the positions outside every view triangle: how many, and the farthest
   CHECK(uncoveredPositions(mesh, std::span(positions).first(3)).count == 0);
 }
 
+TEST_CASE("N and B step to the nearest reference ahead and behind, within 60 degrees before 90") {
+  // Vertices 0 (0,0), 1 (6,0), 2 (6,1), 3 (0,1).
+  const ViewMesh mesh(kCorners, kXArm, lCorridors());
+  const glm::dvec2 here(3.0, 0.7);
+  CHECK(nearestVertexAhead(mesh, here, 0.0) == 2);    // east: (6,1) is nearer than (6,0)
+  CHECK(nearestVertexAhead(mesh, here, 180.0) == 3);  // west: (0,1)
+  CHECK(nearestVertexAhead(mesh, here, 340.0) == 2);  // 25.7 degrees off: still within 60
+  // North: each vertex is more than 60 degrees off; within 90, (6,1) and
+  // (0,1) are 84.3 degrees off and as near: the first.
+  CHECK(nearestVertexAhead(mesh, here, 90.0) == 2);
+  // From (6,0) looking west, (6,1) is nearest but 90 degrees off: the
+  // vertex within 60 wins, and the walker's own vertex never counts.
+  CHECK(nearestVertexAhead(mesh, {6.0, 0.0}, 180.0) == 0);
+  CHECK(nearestVertexAhead(mesh, {6.0, 0.0}, 90.0) == 2);
+  CHECK(nearestVertexAhead(mesh, {6.0, 0.0}, 300.0) == -1);  // nothing within 90 degrees
+}
+
 }  // namespace triwalk

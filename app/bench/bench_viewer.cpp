@@ -1,6 +1,6 @@
 #include "app/bench/bench_groups.h"
 #include "app/setup/walkthrough_setup.h"
-#include "core/io/camera_path.h"
+#include "core/geometry/camera_path.h"
 #include "core/io/simplified_mesh_store.h"
 #include "render/walkthrough/frame_scale.h"
 #include "render/walkthrough/walkthrough_renderer.h"

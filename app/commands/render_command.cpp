@@ -10,7 +10,7 @@
 #include "app/video/video_file.h"
 #include "core/image/image_annotation.h"
 #include "core/image/image_compare.h"
-#include "core/io/camera_path.h"
+#include "core/io/camera_path_file.h"
 #include "core/io/json_fields.h"
 #include "core/io/png_io.h"
 #include "core/io/staged_directory.h"
@@ -90,7 +90,7 @@ FrameScores summarizeScores(std::vector<double> psnrs, std::vector<double> ssims
 constexpr const char* kRenderOutputMarker = "frame_0000.png";
 
 // Enough for a walk of an hour at 30 frames a second.
-constexpr int kMaxPresetFrames = 108000;
+constexpr int kMaxFrames = 108000;
 
 }  // namespace
 
@@ -110,8 +110,9 @@ void registerRenderCommand(CLI::App& app) {
   command->add_option("--dataset", arguments->dataset, "Data set directory")->required();
   command->add_option("--selection", arguments->selection, "Selection (from decimate); default: all samples");
   command->add_option("--path", arguments->path,
-                      "Camera path file (x y z yaw pitch a line), or the preset rotate (turn at --at) or translate "
-                      "(--from to --to)")
+                      "Camera path file (x y z yaw pitch [seconds] a line: one pose a frame, or a walk recorded in "
+                      "the viewer, played in time at --fps), or the preset rotate (turn at --at) or translate (--from "
+                      "to --to)")
       ->capture_default_str();
   command->add_option("--out", arguments->out,
                       "Directory for frame_NNNN.png, replaced as a whole (an existing one must be empty or hold an "
@@ -120,13 +121,13 @@ void registerRenderCommand(CLI::App& app) {
                       "Also (or, without --out, only) encode the frames as a video: H.264 in the container the "
                       "extension names (.mp4, .mkv, .mov), written whole or not at all")
       ->check(writableFile());
-  command->add_option("--fps", arguments->fps, "Frames a second of --video (the path's poses are its frames)")
+  command->add_option("--fps", arguments->fps, "Frames a second of --video, and at which a recorded walk (a path with seconds) is rendered")
       ->capture_default_str()->check(CLI::Range(1, 240));
   command->add_option("--size", arguments->size, "Frame size WIDTHxHEIGHT")->capture_default_str();
   command->add_option("--fov", arguments->fov, "Vertical field of view, degrees")
       ->capture_default_str()->check(CLI::Range(10.0f, 150.0f));
   command->add_option("--frames", arguments->frames, "Frames of a preset path (default: 36 rotate, 24 translate)")
-      ->check(CLI::Range(1, kMaxPresetFrames));
+      ->check(CLI::Range(1, kMaxFrames));
   command->add_option("--at", arguments->at, "rotate: position x,y[,z] (default: the middle of the samples)")
       ->delimiter(',')->expected(2, 3)->check(coordinate());
   command->add_option("--from", arguments->from, "translate: start x,y[,z]")->delimiter(',')->expected(2, 3)->check(coordinate());
@@ -182,7 +183,12 @@ void registerRenderCommand(CLI::App& app) {
       const float sideways = glm::degrees(std::atan2(motion.y, motion.x)) + 90.0f;
       poses = translatePath(from, to, a.frames > 0 ? a.frames : 24, a.yaw.empty() ? sideways : a.yaw[0], a.pitch);
     } else {
-      poses = readCameraPath(a.path);
+      const CameraPath path = readCameraPath(a.path);
+      if (frameCount(path, a.fps) > size_t(kMaxFrames)) {
+        throw InputError(a.path, "lasts " + std::to_string(int(pathDuration(path, a.fps))) + " s: more than " +
+                                     std::to_string(kMaxFrames) + " frames at --fps " + std::to_string(a.fps));
+      }
+      poses = framePoses(path, a.fps);
     }
 
     // No reference saw from outside the walkable region: frames there are

@@ -119,10 +119,7 @@ void DecimationSession::worker() {
       if (quit_) return;
       if (loadDone_ && !errorsAdopted_) {
         // The panoramas just arrived: colour the map and say so.
-        task = [this] {
-          ensureErrors();
-          publish("ready");
-        };
+        task = [this] { ensureErrors(); };
       } else {
         task = std::move(tasks_.front());
         tasks_.pop_front();
@@ -151,6 +148,8 @@ void DecimationSession::ensureErrors() {
   lock.unlock();
   cachedErrors_ = std::make_unique<CachingTriangleErrors>(*errors_);
   cachedSampleErrors_ = std::make_unique<CachingReconstructionErrors>(*errors_);
+  // Whichever task adopted them: the map's colours, and the snapshot no longer loading.
+  publish("ready");
 }
 
 void DecimationSession::ensureDecimator() {
@@ -323,26 +322,45 @@ void DecimationSession::runForward(double maxError, int targetSamples, const std
 
 void DecimationSession::stop() { stopRun_ = true; }
 
+DecimationSession::Inspection DecimationSession::reconstruct(const Triangle& triangle, int destination) {
+  ensureErrors();
+  Inspection inspection;
+  inspection.triangle = triangle;
+  inspection.destination = destination;
+  const glm::vec3 position = dataset_.sample(destination).position;
+  const SynthesizedView view = errors_->synthesize(triangle, position);
+  ScalarImage perPixel;
+  inspection.error = reconstructionError(toDisplayColors(view.blended.color), view.blended.hole,
+                                         errors_->sampleDisplay(destination), settings_.error, &perPixel);
+  inspection.reconstruction = displayImage(view.blended, HoleMode::Mark);
+  Rgb8Image truth(perPixel.width, perPixel.height);
+  const ColorImage& display = errors_->sampleDisplay(destination);
+  for (size_t i = 0; i < truth.pixelCount(); ++i) truth.pixels[i] = toBytes(display.pixels[i]);
+  inspection.truth = std::move(truth);
+  inspection.heatmap = heatmapImage(perPixel, kInspectionHeatmapScale);
+  return inspection;
+}
+
 void DecimationSession::inspect(const Triangle& triangle) {
   post([this, triangle] {
     ensureErrors();
-    Inspection inspection;
-    inspection.triangle = triangle;
-    inspection.destination = errors_->destinationsOf(triangle).front().first;
-    const glm::vec3 position = dataset_.sample(inspection.destination).position;
-    const SynthesizedView view = errors_->synthesize(triangle, position);
-    ScalarImage perPixel;
-    inspection.error = reconstructionError(toDisplayColors(view.blended.color), view.blended.hole,
-                                           errors_->sampleDisplay(inspection.destination), settings_.error, &perPixel);
-    inspection.reconstruction = displayImage(view.blended, HoleMode::Mark);
-    Rgb8Image truth(perPixel.width, perPixel.height);
-    const ColorImage& display = errors_->sampleDisplay(inspection.destination);
-    for (size_t i = 0; i < truth.pixelCount(); ++i) truth.pixels[i] = toBytes(display.pixels[i]);
-    inspection.truth = std::move(truth);
-    inspection.heatmap = heatmapImage(perPixel, 0.25f);
+    Inspection inspection = reconstruct(triangle, errors_->destinationsOf(triangle).front().first);
     std::lock_guard lock(mutex_);
     inspection_ = std::move(inspection);
   });
+}
+
+void DecimationSession::inspectSample(const Triangle& triangle, int sample) {
+  post([this, triangle, sample] {
+    Inspection inspection = reconstruct(triangle, sample);
+    std::lock_guard lock(mutex_);
+    sampleInspection_ = std::move(inspection);
+  });
+}
+
+std::optional<DecimationSession::Inspection> DecimationSession::sampleInspection() const {
+  std::lock_guard lock(mutex_);
+  return sampleInspection_;
 }
 
 std::optional<DecimationSession::Inspection> DecimationSession::inspection() const {

@@ -27,6 +27,9 @@
 
 namespace triwalk {
 
+// The inspection's heatmaps show a pixel's RMS colour difference from 0 to this (red).
+constexpr float kInspectionHeatmapScale = 0.25f;
+
 class DecimationSession {
 public:
   // selection: continue from a saved selection (its log when it has one).
@@ -71,8 +74,13 @@ public:
     ReconstructionError error;
     Rgb8Image reconstruction, truth, heatmap;
   };
+  // The triangle's reconstruction at the destination nearest its centroid (the Inspector).
   void inspect(const Triangle& triangle);
   std::optional<Inspection> inspection() const;
+  // A sample reconstructed from the triangle (the view's error overlay):
+  // its own slot, so that the Inspector keeps what was clicked.
+  void inspectSample(const Triangle& triangle, int sample);
+  std::optional<Inspection> sampleInspection() const;
 
   // The selection at the current step, as decimate would write it.
   Selection selection() const;
@@ -95,6 +103,8 @@ private:
   void ensureDecimator();
   bool forwardOne();
   void publish(const std::string& status);
+  // Worker thread only.
+  Inspection reconstruct(const Triangle& triangle, int destination);
 
   const Dataset& dataset_;
   TriangleErrorSettings settings_;
@@ -119,7 +129,7 @@ private:
   std::condition_variable wake_;
   std::deque<std::function<void()>> tasks_;
   Snapshot snapshot_;
-  std::optional<Inspection> inspection_;
+  std::optional<Inspection> inspection_, sampleInspection_;
   std::atomic<bool> stopRun_{false};
   // The last error a run reached (at first the selection's threshold) and
   // the step it stopped at, as a selection file's max_error and

@@ -1,10 +1,11 @@
 // Top view: the walkable region's walls, every sample, the current
 // triangulation colored by triangle error (with a legend), the person and
-// where they look, the triangle they stand in; a click selects a triangle
-// for the inspector.
+// where they look, the triangle they stand in; a click goes there and
+// selects the triangle for the inspector.
 
 #include "app/viewer/sidebar.h"
 #include "app/viewer/viewer_state.h"
+#include "core/geometry/walk_constraint.h"
 #include "core/geometry/walkable_region.h"
 #include "core/image/color.h"
 
@@ -107,6 +108,11 @@ void drawMapPanel(ViewerState& state) {
   if (clicked) {
     const ImVec2 mouse = ImGui::GetMousePos();
     const glm::dvec2 world(lower.x + (mouse.x - origin.x) / scale, lower.y + (origin.y + canvasSize.y - mouse.y) / scale);
+    // Go there, where a walker may stand, and inspect the triangle there.
+    if (isWalkable(state.mesh, world)) {
+      state.walk.position = glm::vec3(glm::vec2(world), state.walk.position.z);
+      state.walkPath.playingSince.reset();
+    }
     const int t = state.mesh.locate(world);
     if (t >= 0 && state.mesh.contains(t, world)) {
       state.selectedTriangle = t;
@@ -127,7 +133,7 @@ void drawMapPanel(ViewerState& state) {
   ImGui::Dummy(ImVec2(canvasSize.x, 20));
   if (state.selectedTriangle < 0) {
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextDisabled("Click a triangle to inspect how its panoramas reconstruct a view.");
+    ImGui::TextDisabled("Click the map to go there and inspect how the triangle's panoramas reconstruct a view.");
     ImGui::PopTextWrapPos();
   }
 }

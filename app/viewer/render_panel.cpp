@@ -11,9 +11,14 @@ namespace triwalk {
 
 void drawRenderPanel(ViewerState& state) {
   if (!beginSidebarSection("Render")) return;
-  ImGui::Text("%.1f fps, frame %.1f ms (%.2f M triangles)", state.smoothedFrameSeconds > 0.0 ? 1.0 / state.smoothedFrameSeconds : 0.0,
-              state.frameMilliseconds,
-              double(state.frame.trianglesDrawn) / 1e6);
+  // A scripted run's screenshot leaves out what depends on timing, so that it repeats.
+  if (state.scripted) {
+    ImGui::TextDisabled("frame times and the working set: not shown in scripted runs (--frames)");
+  } else {
+    ImGui::Text("%.1f fps, frame %.1f ms (%.2f M triangles)",
+                state.smoothedFrameSeconds > 0.0 ? 1.0 / state.smoothedFrameSeconds : 0.0, state.frameMilliseconds,
+                double(state.frame.trianglesDrawn) / 1e6);
+  }
   const Dataset& dataset = *state.dataset;
   ImGui::Text("triangle %d, references", state.currentTriangle);
   for (int r : state.references) {
@@ -24,9 +29,11 @@ void drawRenderPanel(ViewerState& state) {
     ImGui::SameLine();
     ImGui::TextColored(ImVec4(1, 0.6f, 0.2f, 1), "(%d loading)", 3 - state.referencesAvailable);
   }
-  ImGui::Text("working set: %d resident, %.0f MB, %d pending; hits %llu, misses %llu", state.cache.resident,
-              double(state.cache.residentBytes) / 1e6, state.cache.pending, (unsigned long long)state.cache.hits,
-              (unsigned long long)state.cache.misses);
+  if (!state.scripted) {
+    ImGui::Text("working set: %d resident, %.0f MB, %d pending; hits %llu, misses %llu", state.cache.resident,
+                double(state.cache.residentBytes) / 1e6, state.cache.pending, (unsigned long long)state.cache.hits,
+                (unsigned long long)state.cache.misses);
+  }
   ImGui::Separator();
   ImGui::SliderFloat("epsilon", &state.warp.blend.epsilon, 0.001f, 0.5f, "%.3f", ImGuiSliderFlags_Logarithmic);
   ImGui::SliderFloat("r_min (m)", &state.warp.blend.minimumWeightDistance, 0.01f, 2.0f, "%.2f");
@@ -42,6 +49,10 @@ void drawRenderPanel(ViewerState& state) {
     state.warp.holes = HoleMode(holes);
   }
   ImGui::Checkbox("show references (red, green, blue)", &state.warp.showSources);
+  int overlay = int(state.overlay);
+  if (ImGui::Combo("overlay (T, E)", &overlay, "none\0trust\0error against the nearest sample\0")) {
+    state.overlay = ViewOverlay(overlay);
+  }
   ImGui::SliderFloat("field of view", &state.verticalFovDegrees, 30.0f, 110.0f, "%.0f deg");
   ImGui::SliderFloat("render scale", &state.renderScale, 0.25f, 1.0f, "%.2f");
   ImGui::Checkbox("while walking, fit the frame in", &state.holdFrameBudget);
@@ -54,7 +65,7 @@ void drawRenderPanel(ViewerState& state) {
   ImGui::Text("position (%.2f, %.2f)  yaw %.0f  pitch %.0f", state.walk.position.x, state.walk.position.y, state.walk.yawDegrees,
               state.walk.pitchDegrees);
   if (ImGui::Button("screenshot (F12)")) state.screenshotRequested = true;
-  ImGui::TextDisabled("W A S D / arrows: walk, Shift: run, drag: look around");
+  ImGui::TextDisabled("W A S D / arrows: walk, Shift: run, drag: look around, F1: every key");
 }
 
 }  // namespace triwalk

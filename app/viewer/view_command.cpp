@@ -6,6 +6,7 @@
 #include "app/setup/walkthrough_setup.h"
 #include "app/viewer/viewer_app.h"
 #include "app/viewer/viewer_controls.h"
+#include "core/io/camera_path_file.h"
 #include "core/selection/triangle_error.h"
 #include "core/support/errors.h"
 
@@ -13,7 +14,8 @@ namespace triwalk {
 
 void registerViewCommand(CLI::App& app) {
   struct Arguments {
-    std::string dataset, selection, size = "1280x720", screenshot, path, sidebar = "remembered";
+    std::string dataset, selection, size = "1280x720", screenshot, path, record, sidebar = "remembered", overlay = "none";
+    bool hideUi = false;
     int frames = 0;
     int errorWidth = 0, errorStride = 0;
     size_t cacheMegabytes = 1024;
@@ -39,9 +41,25 @@ void registerViewCommand(CLI::App& app) {
                       "$XDG_CONFIG_HOME/triwalk/viewer.json)")
       ->capture_default_str()->check(CLI::IsMember({"shown", "hidden", "remembered"}));
   command->footer(describeViewerControls());
-  command->add_option("--frames", arguments->frames, "Render this many frames, write --screenshot and exit");
+  command->add_option("--frames", arguments->frames,
+                      "Render this many frames (each 1/30 s of --path's playback), then wait for the panoramas the "
+                      "last one shows and the decimation's (at most 300 s, said if it gives up), write --screenshot "
+                      "and exit: the same arguments give the same screenshot")
+      ->check(CLI::PositiveNumber);
   command->add_option("--screenshot", arguments->screenshot, "With --frames: PNG of the window at the last frame")->check(writableFile());
-  command->add_option("--path", arguments->path, "With --frames: camera path file (x y z yaw pitch a line)");
+  command->add_option("--path", arguments->path,
+                      "Camera path to play at start, in real time and smoothly: a walk recorded here (R) at its own "
+                      "speed, a path of one pose a frame at 30 poses a second (render --path reads the same files)");
+  command->add_option("--record", arguments->record,
+                      "Record the walk from the start (R ends it) into this camera path file, also when the viewer "
+                      "closes")
+      ->check(writableFile());
+  command->add_option("--overlay", arguments->overlay,
+                      "Colour the view at start by: trust (how many references agree on each pixel, and how well they "
+                      "saw it), error (standing near a captured sample, the per-pixel error against its panorama), or "
+                      "none (T and E switch them)")
+      ->capture_default_str()->check(CLI::IsMember({"none", "trust", "error"}));
+  command->add_flag("--hide-ui", arguments->hideUi, "The view alone: no tools, hints or notices (screenshots, videos of the window)");
   // Simplified meshes: a walk fits the frame budget at a higher resolution
   // (docs/history/BENCHMARKS-2026-11.md, "stored simplified meshes, and the scaling row");
   // render keeps the grid.
@@ -59,7 +77,11 @@ void registerViewCommand(CLI::App& app) {
     if (a.sidebar != "remembered") options.sidebar = a.sidebar == "shown";
     options.frames = a.frames;
     options.screenshot = a.screenshot;
-    if (!a.path.empty()) options.path = readCameraPath(a.path);
+    if (!a.path.empty()) options.path = readCameraPath(a.path), options.pathFile = a.path;
+    options.record = a.record;
+    options.hideUi = a.hideUi;
+    options.overlay = a.overlay == "trust" ? ViewOverlay::Trust : a.overlay == "error" ? ViewOverlay::Error : ViewOverlay::None;
+    if (a.hideUi && a.sidebar == "shown") throw InputError("--hide-ui", "shows no tools: leave out --sidebar shown");
     if (options.frames > 0 && options.screenshot.empty()) throw InputError("--frames", "give --screenshot FILE too");
     runViewer(options);
   });

@@ -6,14 +6,18 @@
 
 #include "app/setup/decimation_options.h"
 #include "app/setup/walkthrough_setup.h"
+#include "app/viewer/path_video_export.h"
 #include "app/viewer/sidebar.h"
 #include "app/viewer/viewer_controls.h"
 #include "app/viewer/viewer_preferences.h"
 #include "app/viewer/viewer_state.h"
+#include "app/viewer/walk_recording.h"
+#include "core/geometry/walk_constraint.h"
 #include "core/io/png_io.h"
 #include "core/selection/selection.h"
 #include "render/gl/glfw_window_context.h"
 #include "render/walkthrough/frame_scale.h"
+#include "render/walkthrough/panorama_overlay.h"
 #include "render/walkthrough/walkthrough_renderer.h"
 
 #define GLFW_INCLUDE_NONE
@@ -30,6 +34,13 @@
 namespace triwalk {
 
 namespace {
+
+// A scripted screenshot waits at most this long for what it shows to load.
+constexpr double kScreenshotWaitSeconds = 300.0;
+// The walk panel's videos, as render's default --fps.
+constexpr int kExportFramesPerSecond = 30;
+// The error overlay over the scene: enough of the scene shows through to tell where the error is.
+constexpr float kErrorOverlayOpacity = 0.7f;
 
 Rgb8Image readWindow(int width, int height) {
   std::vector<glm::u8vec3> rows(size_t(width) * size_t(height));
@@ -121,7 +132,18 @@ public:
     state_.grazingAngleDegrees = options.synthesis.warp.grazingAngleDegrees;
     state_.walk.position = startPosition(state_.mesh, sampleEyeHeight(dataset_));
     warpOptions_ = options.synthesis.warp;
-    state_.sidebar = options.sidebar.value_or(preferences_.sidebar);
+    state_.sidebar = options.sidebar.value_or(preferences_.sidebar) && !options.hideUi;
+    state_.scripted = options.frames > 0;
+    state_.overlay = options.overlay;
+    if (!options.path.poses.empty()) {
+      state_.walkPath.path = options.path;
+      state_.walkPath.source = options.pathFile;
+      state_.walkPath.playingSince = 0.0;
+    }
+    if (!options.record.empty()) {
+      state_.walkPath.file = options.record.string();
+      state_.walkPath.recordingSince = 0.0;
+    }
     openWorkingSet();
 
     IMGUI_CHECKVERSION();
@@ -136,15 +158,13 @@ public:
     glfwSetKeyCallback(context_.window(), [](GLFWwindow* window, int key, int, int action, int) {
       if (action != GLFW_PRESS) return;
       Viewer& viewer = *static_cast<Viewer*>(glfwGetWindowUserPointer(window));
-      if (key == GLFW_KEY_F12) viewer.state_.screenshotRequested = true;
-      if (ImGui::GetIO().WantTextInput) return;
-      if (key == GLFW_KEY_TAB) viewer.toggleSidebar();
-      if (key == GLFW_KEY_F1) viewer.state_.help = !viewer.state_.help;
+      viewer.pressed(key);
     });
     glfwSetCharCallback(context_.window(), [](GLFWwindow* window, unsigned int codepoint) {
       Viewer& viewer = *static_cast<Viewer*>(glfwGetWindowUserPointer(window));
-      if (codepoint == '?' && !ImGui::GetIO().WantTextInput) viewer.state_.help = !viewer.state_.help;
+      if (codepoint == '?' && !ImGui::GetIO().WantTextInput && !viewer.options_.hideUi) viewer.state_.help = !viewer.state_.help;
     });
+    panoramaOverlay_ = std::make_unique<PanoramaOverlay>();
     ImGui_ImplGlfw_InitForOpenGL(context_.window(), true);
     ImGui_ImplOpenGL3_Init("#version 450");
   }
@@ -166,44 +186,178 @@ public:
       const auto now = std::chrono::steady_clock::now();
       const double seconds = std::chrono::duration<double>(now - last).count();
       last = now;
-      const bool scripted = options_.frames > 0;
+      const bool scripted = state_.scripted;
+      // A scripted run's last frame waits for what it shows to load; it is
+      // then drawn once more for the screenshot, because ImGui lays a
+      // window out from its previous frame (a scrollbar sized while a
+      // notice was still there).
       const bool finalFrame = scripted && frame + 1 >= options_.frames;
+      const bool screenshotFrame = scripted && frame >= options_.frames;
+      if (frame > 0 && !screenshotFrame) state_.clock += scripted ? 1.0 / kPathFramesPerSecond : seconds;
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();
 
-      update(seconds, frame, scripted, finalFrame);
+      update(seconds, scripted, finalFrame && !screenshotFrame);
       renderWalkthrough(finalFrame);
       const ImVec2 display = ImGui::GetIO().DisplaySize;
       if (state_.sidebar) {
         beginSidebar(display);
         drawMapPanel(state_);
+        drawWalkPanel(state_);
         drawDecimationPanel(state_);
         drawInspectorPanel(state_);
         drawRenderPanel(state_);
         ImGui::End();
-      } else {
+      } else if (!options_.hideUi) {
         ImGui::GetForegroundDrawList()->AddText(ImVec2(10.0f, 8.0f), IM_COL32(255, 255, 255, 160),
                                                 "Tab: tools    F1: keys");
       }
-      if (state_.help) drawHelpOverlay(display);
-      drawLoadingNotice();
+      if (!options_.hideUi) {
+        if (state_.help) drawHelpOverlay(display);
+        drawNotices();
+      }
+      drawOverlayLegend(ImGui::GetForegroundDrawList(), display, sceneWidth(display), state_.overlay, state_.overlayNote);
 
       ImGui::Render();
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-      if (state_.screenshotRequested || finalFrame) saveScreenshot(finalFrame);
+      if (state_.screenshotRequested || screenshotFrame) saveScreenshot(screenshotFrame);
       context_.swapBuffers();
       state_.frameMilliseconds = 1000.0 * std::chrono::duration<double>(std::chrono::steady_clock::now() - now).count();
       // Average the frame time, not its reciprocal: a few fast frames while
       // panoramas load would otherwise inflate the fps for seconds.
       state_.smoothedFrameSeconds =
           state_.smoothedFrameSeconds > 0.0 ? 0.9 * state_.smoothedFrameSeconds + 0.1 * seconds : seconds;
-      if (finalFrame) break;
+      if (screenshotFrame) break;
     }
+    // A recording still going is kept.
+    if (state_.walkPath.recordingSince) toggleRecording(state_.walkPath, state_.clock);
     return 0;
   }
 
 private:
+  // Keys through GLFW's callback (see the constructor).
+  void pressed(int key) {
+    if (key == GLFW_KEY_F12) state_.screenshotRequested = true;
+    if (ImGui::GetIO().WantTextInput) return;
+    if (key == GLFW_KEY_ESCAPE) cancel();
+    if (key == GLFW_KEY_R) toggleRecording(state_.walkPath, state_.clock);
+    if (key == GLFW_KEY_P) togglePlayback(state_.walkPath, state_.clock);
+    if (key == GLFW_KEY_N || key == GLFW_KEY_B) teleportToReference(key == GLFW_KEY_B);
+    if (key == GLFW_KEY_T) toggleOverlay(ViewOverlay::Trust);
+    if (key == GLFW_KEY_E) toggleOverlay(ViewOverlay::Error);
+    if (options_.hideUi) return;
+    if (key == GLFW_KEY_TAB) toggleSidebar();
+    if (key == GLFW_KEY_F1) state_.help = !state_.help;
+  }
+
+  void toggleOverlay(ViewOverlay overlay) { state_.overlay = state_.overlay == overlay ? ViewOverlay::None : overlay; }
+
+  // The error overlay follows the sample nearest to the walker: its
+  // reconstruction from the triangle that holds it, asked of the session's
+  // worker, shown once it arrives.
+  void updateErrorOverlay() {
+    const int sample = overlaySample(dataset_, state_.walk.position);
+    if (sample < 0) {
+      shownOverlay_.reset();
+      state_.overlayNote = "no captured sample within 0.5 m: walk to one (the map's dots; N, B: the references)";
+      return;
+    }
+    const glm::dvec2 at(dataset_.sample(sample).position);
+    const int t = state_.mesh.locate(at);
+    if (t < 0) return;
+    const OverlayKey key{sample, state_.mesh.triangles()[size_t(t)]};
+    if (key != requestedOverlay_) {
+      session_->inspectSample(key.triangle, sample);
+      requestedOverlay_ = key;
+    }
+    const auto inspection = session_->sampleInspection();
+    if (inspection && inspection->destination == key.sample && inspection->triangle == key.triangle && shownOverlay_ != key) {
+      state_.errorOverlayImage.upload(inspection->heatmap);
+      shownOverlay_ = key;
+      overlayError_ = inspection->error;
+    }
+    char note[160];
+    const double away = glm::distance(at, glm::dvec2(state_.walk.position));
+    if (shownOverlay_ == key) {
+      std::snprintf(note, sizeof note, "sample %d, %.2f m away: E %.3f (R %.4f, B %.1f%%)", dataset_.sample(sample).id, away,
+                    overlayError_.total, overlayError_.rms, overlayError_.badPercent);
+    } else {
+      std::snprintf(note, sizeof note, "reconstructing sample %d...", dataset_.sample(sample).id);
+    }
+    state_.overlayNote = note;
+  }
+
+  // Esc: ends a video export (leaving no file), else a playback.
+  void cancel() {
+    if (export_) {
+      export_.reset();
+      state_.exportFrames = 0;
+      state_.walkPath.message = "export cancelled: no video written";
+    } else if (state_.walkPath.playingSince) {
+      togglePlayback(state_.walkPath, state_.clock);
+    }
+  }
+
+  // N and B: to the nearest reference ahead or behind, standing where its
+  // panorama was captured (the view there is the reference itself).
+  void teleportToReference(bool behind) {
+    const int v = nearestVertexAhead(state_.mesh, glm::dvec2(state_.walk.position),
+                                     double(state_.walk.yawDegrees) + (behind ? 180.0 : 0.0));
+    if (v < 0) return;
+    state_.walkPath.playingSince.reset();
+    state_.walk.position = glm::vec3(glm::vec2(state_.mesh.position(v)), state_.walk.position.z);
+  }
+
+  void startExport() {
+    state_.exportRequested = false;
+    WalkRecording& walk = state_.walkPath;
+    if (walk.path.poses.empty()) {
+      walk.message = "no walk to export: R records one, or load a file";
+      return;
+    }
+    try {
+      // The window's size, even for the video's 4:2:0 chroma.
+      export_ = std::make_unique<PathVideoExport>(walk.path, walk.videoFile, options_.width & ~1, options_.height & ~1,
+                                                  kExportFramesPerSecond);
+    } catch (const std::exception& error) {
+      walk.message = std::string("no video: ") + error.what();
+      return;
+    }
+    walk.playingSince.reset();
+    state_.exportFrame = 0;
+    state_.exportFrames = export_->frames();
+    walk.message = "exporting " + walk.videoFile + " (Esc cancels)";
+  }
+
+  // One frame of the export, as render draws it: every reference waited for, the full size.
+  void exportFrame(const PinholeCamera& camera) {
+    PinholeCamera frameCamera = camera;
+    frameCamera.width = export_->width();
+    frameCamera.height = export_->height();
+    const WalkthroughRenderer::Frame frame = renderer_->render(frameCamera, state_.warp, true);
+    state_.currentTriangle = frame.triangle;
+    state_.references = frame.references;
+    state_.referencesAvailable = frame.available;
+    lastPose_.reset();
+    try {
+      export_->write(renderer_->warper().readPixels());
+    } catch (const std::exception& error) {
+      export_.reset();
+      state_.exportFrames = 0;
+      state_.walkPath.message = std::string("no video: ") + error.what();
+      return;
+    }
+    state_.exportFrame = export_->framesWritten();
+    if (export_->done()) {
+      state_.walkPath.message = "exported " + std::to_string(export_->frames()) + " frames to " + state_.walkPath.videoFile;
+      std::printf("%s\n", state_.walkPath.message.c_str());
+      std::fflush(stdout);
+      export_.reset();
+      state_.exportFrames = 0;
+    }
+  }
+
   void toggleSidebar() {
     state_.sidebar = !state_.sidebar;
     preferences_.sidebar = state_.sidebar;
@@ -239,20 +393,22 @@ private:
     ImGui::End();
   }
 
-  void update(double seconds, int frame, bool scripted, bool finalFrame) {
+  // waitForLoading: a scripted run's last frame.
+  void update(double seconds, bool scripted, bool waitForLoading) {
     const ImGuiIO& io = ImGui::GetIO();
-    if (scripted && !options_.path.empty()) {
-      const CameraPose& pose = options_.path[size_t(frame) % options_.path.size()];
-      state_.walk.position = pose.position;
-      state_.walk.yawDegrees = pose.yawDegrees;
-      state_.walk.pitchDegrees = pose.pitchDegrees;
-    } else if (!scripted) {
+    if (state_.exportRequested) startExport();
+    if (export_) {
+      moveTo(state_.walk, export_->nextPose());
+    } else if (!followPlayback(state_.walkPath, state_.clock, state_.walk) && !scripted) {
       walk_.update(context_.window(), seconds, !io.WantCaptureKeyboard, !io.WantCaptureMouse, state_.mesh, state_.walk);
     }
-    // A scripted run shows the decimation's state once it has loaded.
-    if (finalFrame) {
-      while (session_->snapshot().busy) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    recordFrame(state_.walkPath, state_.clock, state_.walk);
+    state_.warp.showTrust = state_.overlay == ViewOverlay::Trust;
+    if (state_.overlay == ViewOverlay::Error) updateErrorOverlay();
+    if (state_.overlay == ViewOverlay::Trust) {
+      state_.overlayNote = "the references within the blend interval, each by how well it saw the surface, over 3";
     }
+    if (waitForLoading) waitForDecimation();
     const DecimationSession::Snapshot snapshot = session_->snapshot();
     if (snapshot.version != state_.snapshot.version) {
       const bool meshChanged = snapshot.triangles != state_.snapshot.triangles;
@@ -280,6 +436,22 @@ private:
       renderer_.reset();
       openWorkingSet();
       ++meshVersion_;
+    }
+  }
+
+  // A scripted screenshot shows the decimation once it has settled: the
+  // panoramas at the error width loaded, the map's triangles coloured,
+  // nothing running; or, after kScreenshotWaitSeconds, as it stands (said).
+  void waitForDecimation() {
+    const auto start = std::chrono::steady_clock::now();
+    for (DecimationSession::Snapshot snapshot = session_->snapshot(); snapshot.busy || snapshot.errorsLoading;
+         snapshot = session_->snapshot()) {
+      if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > kScreenshotWaitSeconds) {
+        std::fprintf(stderr, "triwalk: warning: gave up waiting after %.0f s for the decimation's panoramas; the "
+                     "screenshot shows them loading\n", kScreenshotWaitSeconds);
+        return;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
   }
 
@@ -322,7 +494,9 @@ private:
     const bool changed = !(lastPose_ && lastPose_->camera == full && lastPose_->settings == state_.warp &&
                            lastPose_->meshVersion == meshVersion_);
     const bool settled = !changed && state_.referencesAvailable >= 3 && state_.currentScale >= state_.renderScale;
-    if (!settled) {
+    if (export_) {
+      exportFrame(camera);
+    } else if (!settled) {
       frameScale_.setBudgetMilliseconds(state_.frameBudgetMilliseconds);
       const float scale = changed && state_.holdFrameBudget && !finalFrame ? frameScale_.movingScale(state_.renderScale)
                                                                            : state_.renderScale;
@@ -354,15 +528,44 @@ private:
       glBlitNamedFramebuffer(warper.outputFramebuffer(), 0, 0, 0, warper.width(), warper.height(), 0, 0, width, height,
                              GL_COLOR_BUFFER_BIT, GL_LINEAR);
     }
+    if (state_.overlay == ViewOverlay::Error && shownOverlay_ && !state_.errorOverlayImage.empty()) {
+      glViewport(0, 0, width, height);
+      panoramaOverlay_->draw(GLuint(reinterpret_cast<intptr_t>(state_.errorOverlayImage.id())),
+                             glm::ivec2(state_.errorOverlayImage.width(), state_.errorOverlayImage.height()),
+                             dataset_.sample(shownOverlay_->sample).yawDegrees, camera, float(width) / float(height),
+                             kErrorOverlayOpacity);
+      glViewport(0, 0, windowWidth, height);
+    }
   }
 
-  void drawLoadingNotice() {
-    if (state_.referencesAvailable >= 3) return;
+  // Over the view's bottom: panoramas still loading, a video being
+  // exported, a walk being recorded or played.
+  void drawNotices() {
     const ImVec2 size = ImGui::GetIO().DisplaySize;
     const float left = sceneWidth(size);
-    char text[96];
-    std::snprintf(text, sizeof text, "loading %d of the 3 panoramas...", 3 - state_.referencesAvailable);
-    ImGui::GetForegroundDrawList()->AddText(ImVec2(left * 0.5f - 100.0f, size.y - 40.0f), IM_COL32(255, 200, 80, 255), text);
+    char text[128];
+    float y = size.y - (state_.overlay == ViewOverlay::None ? 40.0f : 96.0f);  // above an overlay's colour bar
+    auto say = [&](ImU32 colour) {
+      ImGui::GetForegroundDrawList()->AddText(ImVec2(left * 0.5f - 120.0f, y), colour, text);
+      y -= 20.0f;
+    };
+    if (state_.referencesAvailable < 3) {
+      std::snprintf(text, sizeof text, "loading %d of the 3 panoramas...", 3 - state_.referencesAvailable);
+      say(IM_COL32(255, 200, 80, 255));
+    }
+    if (export_) {
+      std::snprintf(text, sizeof text, "exporting the walk: frame %zu of %zu (Esc cancels)", export_->framesWritten() + 1,
+                    export_->frames());
+      say(IM_COL32(120, 200, 255, 255));
+    } else if (state_.walkPath.playingSince) {
+      std::snprintf(text, sizeof text, "playing the walk: %.1f of %.1f s (P or Esc stops)",
+                    state_.clock - *state_.walkPath.playingSince, pathDuration(state_.walkPath.path, kPathFramesPerSecond));
+      say(IM_COL32(120, 255, 140, 255));
+    }
+    if (state_.walkPath.recordingSince) {
+      std::snprintf(text, sizeof text, "recording the walk: %.1f s (R ends it)", state_.clock - *state_.walkPath.recordingSince);
+      say(IM_COL32(255, 90, 80, 255));
+    }
   }
 
   void saveScreenshot(bool scriptedFinal) {
@@ -389,6 +592,16 @@ private:
   std::unique_ptr<PanoramaCache> cache_;
   std::unique_ptr<WalkthroughRenderer> renderer_;
   ViewerPreferences preferences_ = readViewerPreferences();
+  std::unique_ptr<PathVideoExport> export_;
+  std::unique_ptr<PanoramaOverlay> panoramaOverlay_;
+  // The error overlay: the sample and triangle asked for, and those shown.
+  struct OverlayKey {
+    int sample = -1;
+    Triangle triangle{};
+    bool operator==(const OverlayKey&) const = default;
+  };
+  std::optional<OverlayKey> requestedOverlay_, shownOverlay_;
+  ReconstructionError overlayError_;
   ViewerState state_;
   WalkController walk_;
   FrameScaleController frameScale_{kWalkFrameBudgetMilliseconds, kMinimumWalkingScale};

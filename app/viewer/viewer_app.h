@@ -1,7 +1,8 @@
 #pragma once
 // `triwalk view`: the interactive walkthrough with its panels.
 
-#include "core/io/camera_path.h"
+#include "app/viewer/view_overlay.h"
+#include "core/geometry/camera_path.h"
 #include "core/synthesis/view_synthesis.h"
 
 #include <filesystem>
@@ -22,11 +23,16 @@ struct ViewerOptions {
   int errorWidth = 0;
   int errorStride = 0;
   SynthesisOptions synthesis;
-  // Scripted use: render this many frames (along the path, if any), write
-  // a screenshot of the window and exit.
+  // Scripted use: render this many frames, 1/30 s of the clock each (the
+  // path's playback, if any), wait for what the last one shows to load,
+  // write a screenshot of the window and exit.
   int frames = 0;
   std::filesystem::path screenshot;
-  std::vector<CameraPose> path;
+  CameraPath path;  // played from the start (app/viewer/walk_recording.h)
+  std::string pathFile;
+  std::filesystem::path record;  // record from the start, saved here
+  bool hideUi = false;           // the view alone: no sidebar, hints or notices (an overlay keeps its colour bar)
+  ViewOverlay overlay = ViewOverlay::None;
   // The tools sidebar at start; unset: as the person left it last time
   // (app/viewer/viewer_preferences.h).
   std::optional<bool> sidebar;

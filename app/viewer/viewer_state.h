@@ -4,7 +4,9 @@
 
 #include "app/viewer/decimation_session.h"
 #include "app/viewer/gl_image.h"
+#include "app/viewer/view_overlay.h"
 #include "app/viewer/walk_controller.h"
+#include "app/viewer/walk_recording.h"
 #include "core/geometry/view_mesh.h"
 #include "core/selection/reference_selection.h"
 #include "render/walkthrough/frame_scale.h"
@@ -24,6 +26,13 @@ struct ViewerState {
   ViewMesh mesh;
 
   WalkState walk;
+  // The viewer's clock, seconds: wall time, or 1/30 s a frame in scripted
+  // runs (app/viewer/walk_recording.h).
+  double clock = 0.0;
+  bool scripted = false;  // --frames: what depends on timing stays off screen
+  WalkRecording walkPath;
+  bool exportRequested = false;  // the walk panel's "export video"
+  size_t exportFrame = 0, exportFrames = 0;  // while exporting
   float verticalFovDegrees = 60.0f;
   float renderScale = 1.0f;  // share of each side of the window the warp renders, at most
   // While the camera moves, fewer pixels so that the warp fits the budget
@@ -62,6 +71,11 @@ struct ViewerState {
   PanoramaCache::Statistics cache;
   GpuFrameStatistics frame;
 
+  // The view's overlay (T, E) and what its legend says.
+  ViewOverlay overlay = ViewOverlay::None;
+  std::string overlayNote;
+  GlImage errorOverlayImage;  // the error overlay's heatmap panorama
+
   bool sidebar = false;  // the tools beside the 3D view (Tab)
   bool help = false;     // the list of keys over the view (F1, ?)
   bool screenshotRequested = false;
@@ -72,5 +86,6 @@ void drawMapPanel(ViewerState& state);
 void drawDecimationPanel(ViewerState& state);
 void drawInspectorPanel(ViewerState& state);
 void drawRenderPanel(ViewerState& state);
+void drawWalkPanel(ViewerState& state);
 
 }  // namespace triwalk

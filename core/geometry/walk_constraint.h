@@ -19,4 +19,10 @@ bool isWalkable(const ViewMesh& mesh, glm::dvec2 point);
 // a wall), else none.
 glm::vec3 constrainedStep(const ViewMesh& mesh, glm::vec3 from, glm::vec2 step);
 
+// Teleporting from reference to reference: the mesh's vertex nearest to
+// `from` (further than 10 cm) among those within 60 degrees of the
+// direction yawDegrees (x axis 0, counter-clockwise), or, if none is, within
+// 90 degrees; -1 if there is none on that side.
+int nearestVertexAhead(const ViewMesh& mesh, glm::dvec2 from, double yawDegrees);
+
 }  // namespace triwalk

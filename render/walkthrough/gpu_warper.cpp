@@ -214,7 +214,8 @@ GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<cons
   resolveProgram_.set("reliabilityWeights", settings.blend.weights == BlendWeights::Reliability ? 1 : 0);
   resolveProgram_.set("epsilon", settings.blend.epsilon);
   resolveProgram_.set("showSources", settings.showSources ? 1 : 0);
-  resolveProgram_.set("holeColor", holeDisplayColor(settings.holes));
+  resolveProgram_.set("showTrust", settings.showTrust ? 1 : 0);
+  resolveProgram_.set("holeColor", settings.showTrust ? glm::vec3(0.0f) : holeDisplayColor(settings.holes));
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glDisable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -223,7 +224,7 @@ GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<cons
     statistics.resolveMilliseconds = millisecondsSince(resolveStart);
   }
 
-  lastFrameFilled_ = settings.holes == HoleMode::Fill && !settings.showSources && levelSizes_.size() > 1;
+  lastFrameFilled_ = settings.holes == HoleMode::Fill && !settings.showSources && !settings.showTrust && levelSizes_.size() > 1;
   if (lastFrameFilled_) {
     const auto fillStart = std::chrono::steady_clock::now();
     fillHoles(settings.blend.epsilon);

@@ -31,6 +31,8 @@ struct GpuWarpSettings {
   BlendOptions blend;
   HoleMode holes = HoleMode::Fill;
   bool showSources = false;  // red, green, blue: which references contributed (holes not filled)
+  // How much to trust each pixel (shaders/warp_resolve.frag; holes black, not filled).
+  bool showTrust = false;
 
   bool operator==(const GpuWarpSettings&) const = default;
 };

@@ -2,7 +2,8 @@
 # Installs the Debian bookworm packages triwalk needs, only those missing.
 # Usage: scripts/install-deps.sh [build|test|fuzz]
 #   build: compilers and libraries for the triwalk binary and its tests
-#   test:  build + Xvfb for the viewer test + the real scenes of issue 7
+#          (Xvfb, and xdotool to type keys into the viewer under it)
+#   test:  build + the real scenes of the tests (the FZK house, OpenArena levels)
 #   fuzz:  build + clang 16 and libFuzzer for the harnesses in fuzz/
 set -euo pipefail
 
@@ -15,7 +16,7 @@ packages=(
   libassimp-dev libmeshoptimizer-dev libminizip-dev libxxhash-dev libtbb-dev libcli11-dev nlohmann-json3-dev doctest-dev
   libopenmpi-dev openmpi-bin
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
-  xvfb xauth
+  xvfb xauth xdotool
 )
 if [[ "$profile" == "test" ]]; then
   packages+=(assimp-testmodels openarena-oacmp1)

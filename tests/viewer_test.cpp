@@ -5,6 +5,7 @@
 #include "app/video/video_file.h"
 #include "core/io/atomic_file.h"
 #include "core/io/camera_path_file.h"
+#include "core/io/dataset.h"
 #include "core/io/png_io.h"
 #include "tests/analytic_scene.h"
 #include "tests/test_support.h"
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <set>
+#include <sstream>
 
 namespace triwalk {
 
@@ -231,6 +233,100 @@ TEST_CASE("the view's overlays: trust everywhere, and the error against a sample
   size_t barPixels = 0;
   for (int x = 0; x < 400; ++x) barPixels += farError.at(x, 720 - 40) != farPlain.at(x, 720 - 40);
   CHECK(barPixels > 200);
+}
+
+TEST_CASE("keys typed into the viewer (xdotool under Xvfb): F1 lists every control view --help lists, T colours by trust, W walks, N steps onto a reference, R saves the walk, Ctrl+Q quits") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 4, 3, 256, 1);
+  // A person at the keyboard: each key waits for the screenshot that shows its effect.
+  const std::string script = R"(set -u
+cd ")" + directory.path().string() + R"("
+XDG_CONFIG_HOME=config )" + std::string(TRIWALK_BINARY) + R"( view --dataset data --sidebar hidden --record walk.txt > viewer.log 2>&1 &
+viewer=$!
+window=$(xdotool search --sync --name '^triwalk$' | head -1)
+xdotool windowfocus --sync "$window"
+shot() { xdotool key F12; for i in $(seq 1 1200); do [ -e "$1" ] && return 0; sleep 0.1; done; echo "no $1"; exit 1; }
+sleep 5
+xdotool key F1; sleep 2; shot triwalk_screenshot_000.png
+xdotool key F1; sleep 2; shot triwalk_screenshot_001.png
+xdotool key t; sleep 2; shot triwalk_screenshot_002.png
+xdotool key t
+xdotool keydown w; sleep 2; xdotool keyup w
+xdotool key n; sleep 1
+xdotool key r
+for i in $(seq 1 600); do [ -e walk.txt ] && break; sleep 0.1; done
+xdotool key ctrl+q
+wait $viewer
+)";
+  writeTextFileAtomically(directory / "keys.sh", script);
+  const std::string command = "xvfb-run -a -s '-screen 0 1280x800x24' bash " + (directory / "keys.sh").string() + " > " +
+                              (directory / "keys.log").string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  INFO("script: " << testing::readTextFileOrEmpty(directory / "keys.log") << "\nviewer: "
+                  << testing::readTextFileOrEmpty(directory / "viewer.log"));
+  REQUIRE(status == 0);
+
+  // F1: a window over the view with a line of text for every control
+  // `view --help` lists, and its title.
+  const ViewerRun help = runTriwalk(directory, "view --help", false);
+  // Its controls: the indented lines after "Controls:".
+  size_t controls = 0;
+  {
+    std::istringstream lines(help.log.substr(help.log.find("Controls:\n") + 10));
+    for (std::string line; std::getline(lines, line) && line.rfind("  ", 0) == 0;) ++controls;
+  }
+  // The list, then the same view without it: they differ by the list alone.
+  const Rgb8Image listing = readPng(directory / "triwalk_screenshot_000.png");
+  const Rgb8Image plain = readPng(directory / "triwalk_screenshot_001.png");
+  // The list's window: its title bar (ImGui's dark style, active title
+  // colour) gives its top and sides; it ends where its left edge stops
+  // differing from the view without it.
+  int top = listing.height, left = listing.width, right = -1;
+  for (int y = 0; y < listing.height; ++y) {
+    for (int x = 0; x < listing.width; ++x) {
+      if (listing.at(x, y) != glm::u8vec3(41, 74, 122)) continue;
+      top = std::min(top, y), left = std::min(left, x), right = std::max(right, x);
+    }
+  }
+  REQUIRE(right > left);
+  int bottom = top;
+  while (bottom + 1 < listing.height && listing.at(left + 2, bottom + 1) != plain.at(left + 2, bottom + 1)) ++bottom;
+  REQUIRE(bottom > top + 100);
+  // Lines of text: bands of rows holding near-white letters inside the window.
+  int lines = 0;
+  bool inLine = false;
+  for (int y = top; y <= bottom; ++y) {
+    bool letters = false;
+    for (int x = left; x <= right && !letters; ++x) {
+      const glm::u8vec3 c = listing.at(x, y);
+      letters = c.r > 200 && c.g > 200 && c.b > 200;
+    }
+    lines += letters && !inLine;
+    inLine = letters;
+  }
+  CHECK(controls >= 10);  // the help was read
+  CHECK(size_t(lines) == controls + 1);  // the title, then one line a control
+
+  // T: the trust colours over the whole view.
+  const Rgb8Image trust = readPng(directory / "triwalk_screenshot_002.png");
+  size_t changed = 0;
+  for (size_t i = 0; i < trust.pixels.size(); ++i) changed += trust.pixels[i] != plain.pixels[i];
+  CHECK(changed > trust.pixels.size() / 2);
+
+  // The walk, recorded from the start and saved by R: W moved the walker
+  // along the view, and N put them on a reference, where its panorama was taken.
+  const CameraPath walk = readCameraPath(directory / "walk.txt");
+  REQUIRE(walk.timed());
+  REQUIRE(walk.poses.size() >= 3);
+  float furthestAhead = 0.0f;  // the walker starts looking along +x
+  for (const CameraPose& pose : walk.poses) furthestAhead = std::max(furthestAhead, pose.position.x - walk.poses.front().position.x);
+  CHECK(furthestAhead > 0.5f);
+  const Dataset dataset = Dataset::open(directory / "data");
+  float nearestSample = 1e9f;
+  for (int i = 0; i < dataset.sampleCount(); ++i) {
+    nearestSample = std::min(nearestSample, glm::distance(glm::vec2(walk.poses.back().position), glm::vec2(dataset.sample(i).position)));
+  }
+  CHECK(nearestSample < 1e-3f);
 }
 
 TEST_CASE("view --help lists every key and mouse control") {

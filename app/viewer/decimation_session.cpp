@@ -88,7 +88,8 @@ void DecimationSession::loadErrors() {
   std::unique_ptr<DatasetTriangleErrors> loaded;
   std::string failure;
   try {
-    loaded = std::make_unique<DatasetTriangleErrors>(dataset_, settings_, LoadedViews::Samples, true);
+    // The probes too: the view's error overlay judges them (a few hundred panoramas at the error width).
+    loaded = std::make_unique<DatasetTriangleErrors>(dataset_, settings_, LoadedViews::SamplesAndProbes, true);
   } catch (const std::exception& error) {
     failure = error.what();
   }
@@ -322,19 +323,20 @@ void DecimationSession::runForward(double maxError, int targetSamples, const std
 
 void DecimationSession::stop() { stopRun_ = true; }
 
-DecimationSession::Inspection DecimationSession::reconstruct(const Triangle& triangle, int destination) {
+DecimationSession::Inspection DecimationSession::reconstruct(const Triangle& triangle, int destination, bool probe) {
   ensureErrors();
   Inspection inspection;
   inspection.triangle = triangle;
   inspection.destination = destination;
-  const glm::vec3 position = dataset_.sample(destination).position;
+  inspection.probe = probe;
+  const glm::vec3 position = (probe ? dataset_.probe(destination) : dataset_.sample(destination)).position;
+  const ColorImage& display = probe ? errors_->probeDisplay(destination) : errors_->sampleDisplay(destination);
   const SynthesizedView view = errors_->synthesize(triangle, position);
   ScalarImage perPixel;
-  inspection.error = reconstructionError(toDisplayColors(view.blended.color), view.blended.hole,
-                                         errors_->sampleDisplay(destination), settings_.error, &perPixel);
+  inspection.error =
+      reconstructionError(toDisplayColors(view.blended.color), view.blended.hole, display, settings_.error, &perPixel);
   inspection.reconstruction = displayImage(view.blended, HoleMode::Mark);
   Rgb8Image truth(perPixel.width, perPixel.height);
-  const ColorImage& display = errors_->sampleDisplay(destination);
   for (size_t i = 0; i < truth.pixelCount(); ++i) truth.pixels[i] = toBytes(display.pixels[i]);
   inspection.truth = std::move(truth);
   inspection.heatmap = heatmapImage(perPixel, kInspectionHeatmapScale);
@@ -344,15 +346,15 @@ DecimationSession::Inspection DecimationSession::reconstruct(const Triangle& tri
 void DecimationSession::inspect(const Triangle& triangle) {
   post([this, triangle] {
     ensureErrors();
-    Inspection inspection = reconstruct(triangle, errors_->destinationsOf(triangle).front().first);
+    Inspection inspection = reconstruct(triangle, errors_->destinationsOf(triangle).front().first, false);
     std::lock_guard lock(mutex_);
     inspection_ = std::move(inspection);
   });
 }
 
-void DecimationSession::inspectSample(const Triangle& triangle, int sample) {
-  post([this, triangle, sample] {
-    Inspection inspection = reconstruct(triangle, sample);
+void DecimationSession::inspectView(const Triangle& triangle, int index, bool probe) {
+  post([this, triangle, index, probe] {
+    Inspection inspection = reconstruct(triangle, index, probe);
     std::lock_guard lock(mutex_);
     sampleInspection_ = std::move(inspection);
   });

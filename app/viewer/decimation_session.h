@@ -70,16 +70,17 @@ public:
 
   struct Inspection {
     Triangle triangle{};
-    int destination = -1;  // sample index
+    int destination = -1;  // sample index, or probe index if probe
+    bool probe = false;
     ReconstructionError error;
     Rgb8Image reconstruction, truth, heatmap;
   };
   // The triangle's reconstruction at the destination nearest its centroid (the Inspector).
   void inspect(const Triangle& triangle);
   std::optional<Inspection> inspection() const;
-  // A sample reconstructed from the triangle (the view's error overlay):
-  // its own slot, so that the Inspector keeps what was clicked.
-  void inspectSample(const Triangle& triangle, int sample);
+  // A sample or a probe reconstructed from the triangle (the view's error
+  // overlay): its own slot, so that the Inspector keeps what was clicked.
+  void inspectView(const Triangle& triangle, int index, bool probe);
   std::optional<Inspection> sampleInspection() const;
 
   // The selection at the current step, as decimate would write it.
@@ -104,7 +105,7 @@ private:
   bool forwardOne();
   void publish(const std::string& status);
   // Worker thread only.
-  Inspection reconstruct(const Triangle& triangle, int destination);
+  Inspection reconstruct(const Triangle& triangle, int destination, bool probe);
 
   const Dataset& dataset_;
   TriangleErrorSettings settings_;

@@ -50,7 +50,7 @@ void drawRenderPanel(ViewerState& state) {
   }
   ImGui::Checkbox("show references (red, green, blue)", &state.warp.showSources);
   int overlay = int(state.overlay);
-  if (ImGui::Combo("overlay (T, E)", &overlay, "none\0trust\0error against the nearest sample\0")) {
+  if (ImGui::Combo("overlay (T, E)", &overlay, "none\0trust\0error against the nearest sample or probe\0")) {
     state.overlay = ViewOverlay(overlay);
   }
   ImGui::SliderFloat("field of view", &state.verticalFovDegrees, 30.0f, 110.0f, "%.0f deg");

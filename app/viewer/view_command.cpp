@@ -56,7 +56,8 @@ void registerViewCommand(CLI::App& app) {
       ->check(writableFile());
   command->add_option("--overlay", arguments->overlay,
                       "Colour the view at start by: trust (how many references agree on each pixel, and how well they "
-                      "saw it), error (standing near a captured sample, the per-pixel error against its panorama), or "
+                      "saw it), error (standing near a captured sample or held-out probe, the per-pixel error against its "
+                      "panorama), or "
                       "none (T and E switch them)")
       ->capture_default_str()->check(CLI::IsMember({"none", "trust", "error"}));
   command->add_flag("--hide-ui", arguments->hideUi, "The view alone: no tools, hints or notices (screenshots, videos of the window)");

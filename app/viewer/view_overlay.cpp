@@ -8,19 +8,25 @@
 
 namespace triwalk {
 
-int overlaySample(const Dataset& dataset, glm::vec3 walker) {
-  int nearest = -1;
+OverlayView overlayView(const Dataset& dataset, glm::vec3 walker) {
+  OverlayView nearest;
   double nearestDistance = kErrorOverlayRadiusMetres;
-  for (int i = 0; i < dataset.sampleCount(); ++i) {
-    const double distance = glm::distance(glm::dvec2(dataset.sample(i).position), glm::dvec2(walker));
-    if (distance <= nearestDistance) nearest = i, nearestDistance = distance;
-  }
+  auto consider = [&](const ViewRecord& view, OverlayView candidate) {
+    const double distance = glm::distance(glm::dvec2(view.position), glm::dvec2(walker));
+    if (distance <= nearestDistance) nearest = candidate, nearestDistance = distance;
+  };
+  for (int i = 0; i < dataset.sampleCount(); ++i) consider(dataset.sample(i), {i, false});
+  for (int i = 0; i < dataset.probeCount(); ++i) consider(dataset.probe(i), {i, true});
   return nearest;
+}
+
+const ViewRecord& overlayViewRecord(const Dataset& dataset, OverlayView view) {
+  return view.probe ? dataset.probe(view.index) : dataset.sample(view.index);
 }
 
 void drawOverlayLegend(ImDrawList* draw, ImVec2 display, float viewWidth, ViewOverlay overlay, const std::string& note) {
   if (overlay == ViewOverlay::None) return;
-  const std::string title = std::string(overlay == ViewOverlay::Trust ? "trust (T): " : "error against a sample (E): ") + note;
+  const std::string title = std::string(overlay == ViewOverlay::Trust ? "trust (T): " : "error against a captured view (E): ") + note;
   char high[96];
   if (overlay == ViewOverlay::Trust) {
     std::snprintf(high, sizeof high, "1: three references agree (black: none)");

@@ -155,10 +155,10 @@ public:
     // frame (often, at llvmpipe's 70 ms) would be lost. ImGui's backend
     // chains to these. A key typed into a text field stays there.
     glfwSetWindowUserPointer(context_.window(), this);
-    glfwSetKeyCallback(context_.window(), [](GLFWwindow* window, int key, int, int action, int) {
+    glfwSetKeyCallback(context_.window(), [](GLFWwindow* window, int key, int, int action, int mods) {
       if (action != GLFW_PRESS) return;
       Viewer& viewer = *static_cast<Viewer*>(glfwGetWindowUserPointer(window));
-      viewer.pressed(key);
+      viewer.pressed(key, mods);
     });
     glfwSetCharCallback(context_.window(), [](GLFWwindow* window, unsigned int codepoint) {
       Viewer& viewer = *static_cast<Viewer*>(glfwGetWindowUserPointer(window));
@@ -237,8 +237,9 @@ public:
 
 private:
   // Keys through GLFW's callback (see the constructor).
-  void pressed(int key) {
+  void pressed(int key, int mods) {
     if (key == GLFW_KEY_F12) state_.screenshotRequested = true;
+    if (key == GLFW_KEY_Q && (mods & GLFW_MOD_CONTROL)) glfwSetWindowShouldClose(context_.window(), GLFW_TRUE);
     if (ImGui::GetIO().WantTextInput) return;
     if (key == GLFW_KEY_ESCAPE) cancel();
     if (key == GLFW_KEY_R) toggleRecording(state_.walkPath, state_.clock);
@@ -253,37 +254,40 @@ private:
 
   void toggleOverlay(ViewOverlay overlay) { state_.overlay = state_.overlay == overlay ? ViewOverlay::None : overlay; }
 
-  // The error overlay follows the sample nearest to the walker: its
+  // The error overlay follows the sample or probe nearest to the walker: its
   // reconstruction from the triangle that holds it, asked of the session's
   // worker, shown once it arrives.
   void updateErrorOverlay() {
-    const int sample = overlaySample(dataset_, state_.walk.position);
-    if (sample < 0) {
+    const OverlayView near = overlayView(dataset_, state_.walk.position);
+    if (near.index < 0) {
       shownOverlay_.reset();
-      state_.overlayNote = "no captured sample within 0.5 m: walk to one (the map's dots; N, B: the references)";
+      state_.overlayNote = "no captured view within 0.5 m: walk to one (the map's dots; N, B: the references)";
       return;
     }
-    const glm::dvec2 at(dataset_.sample(sample).position);
+    const ViewRecord& record = overlayViewRecord(dataset_, near);
+    const glm::dvec2 at(record.position);
     const int t = state_.mesh.locate(at);
     if (t < 0) return;
-    const OverlayKey key{sample, state_.mesh.triangles()[size_t(t)]};
+    const OverlayKey key{near, state_.mesh.triangles()[size_t(t)]};
     if (key != requestedOverlay_) {
-      session_->inspectSample(key.triangle, sample);
+      session_->inspectView(key.triangle, near.index, near.probe);
       requestedOverlay_ = key;
     }
     const auto inspection = session_->sampleInspection();
-    if (inspection && inspection->destination == key.sample && inspection->triangle == key.triangle && shownOverlay_ != key) {
+    if (inspection && inspection->destination == near.index && inspection->probe == near.probe &&
+        inspection->triangle == key.triangle && shownOverlay_ != key) {
       state_.errorOverlayImage.upload(inspection->heatmap);
       shownOverlay_ = key;
       overlayError_ = inspection->error;
     }
     char note[160];
     const double away = glm::distance(at, glm::dvec2(state_.walk.position));
+    const char* kind = near.probe ? "probe" : "sample";
     if (shownOverlay_ == key) {
-      std::snprintf(note, sizeof note, "sample %d, %.2f m away: E %.3f (R %.4f, B %.1f%%)", dataset_.sample(sample).id, away,
+      std::snprintf(note, sizeof note, "%s %d, %.2f m away: E %.3f (R %.4f, B %.1f%%)", kind, record.id, away,
                     overlayError_.total, overlayError_.rms, overlayError_.badPercent);
     } else {
-      std::snprintf(note, sizeof note, "reconstructing sample %d...", dataset_.sample(sample).id);
+      std::snprintf(note, sizeof note, "reconstructing %s %d...", kind, record.id);
     }
     state_.overlayNote = note;
   }
@@ -532,7 +536,7 @@ private:
       glViewport(0, 0, width, height);
       panoramaOverlay_->draw(GLuint(reinterpret_cast<intptr_t>(state_.errorOverlayImage.id())),
                              glm::ivec2(state_.errorOverlayImage.width(), state_.errorOverlayImage.height()),
-                             dataset_.sample(shownOverlay_->sample).yawDegrees, camera, float(width) / float(height),
+                             overlayViewRecord(dataset_, shownOverlay_->view).yawDegrees, camera, float(width) / float(height),
                              kErrorOverlayOpacity);
       glViewport(0, 0, windowWidth, height);
     }
@@ -594,9 +598,9 @@ private:
   ViewerPreferences preferences_ = readViewerPreferences();
   std::unique_ptr<PathVideoExport> export_;
   std::unique_ptr<PanoramaOverlay> panoramaOverlay_;
-  // The error overlay: the sample and triangle asked for, and those shown.
+  // The error overlay: the view and triangle asked for, and those shown.
   struct OverlayKey {
-    int sample = -1;
+    OverlayView view;
     Triangle triangle{};
     bool operator==(const OverlayKey&) const = default;
   };

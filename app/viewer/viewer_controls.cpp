@@ -16,11 +16,12 @@ constexpr std::array kControls = {
     ViewerControl{"N, B", "step to the nearest reference ahead, behind (stand where its panorama was taken)"},
     ViewerControl{"click on the map", "go there, and inspect that triangle: its reconstruction, the truth and the error"},
     ViewerControl{"T", "colour the view by trust: how many references agree on each pixel, how well they saw it"},
-    ViewerControl{"E", "near a captured sample: the per-pixel error of its reconstruction against its panorama"},
+    ViewerControl{"E", "near a sample or held-out probe: the per-pixel error of its reconstruction against it"},
     ViewerControl{"R", "record the walk; again: stop and save it (the Walk tools' file, walk.txt)"},
     ViewerControl{"P", "play the walk in real time; again: stop"},
     ViewerControl{"Esc", "stop playing, or cancel a video export"},
     ViewerControl{"F12", "save a screenshot of the window (triwalk_screenshot_NNN.png)"},
+    ViewerControl{"Ctrl+Q", "quit (a recording still going is saved)"},
 };
 
 }  // namespace

@@ -19,8 +19,8 @@ void drawWalkPanel(ViewerState& state) {
   if (walk.path.poses.empty()) {
     ImGui::TextDisabled("no walk yet: R records one");
   } else {
-    ImGui::Text("walk (%s): %zu poses, %.1f s", walk.source.c_str(), walk.path.poses.size(),
-                pathDuration(walk.path, kPathFramesPerSecond));
+    ImGui::Text("walk (%s): %zu pose%s, %.1f s", walk.source.c_str(), walk.path.poses.size(),
+                walk.path.poses.size() == 1 ? "" : "s", pathDuration(walk.path, kPathFramesPerSecond));
   }
   if (ImGui::Button(walk.recordingSince ? "stop recording (R)" : "record (R)")) toggleRecording(walk, state.clock);
   ImGui::SameLine();

@@ -11,7 +11,8 @@ namespace {
 
 std::string describePath(const CameraPath& path) {
   char text[96];
-  std::snprintf(text, sizeof text, "%zu poses, %.1f s", path.poses.size(), pathDuration(path, kPathFramesPerSecond));
+  std::snprintf(text, sizeof text, "%zu pose%s, %.1f s", path.poses.size(), path.poses.size() == 1 ? "" : "s",
+                pathDuration(path, kPathFramesPerSecond));
   return text;
 }
 

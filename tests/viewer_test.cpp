@@ -235,7 +235,7 @@ TEST_CASE("the view's overlays: trust everywhere, and the error against a sample
   CHECK(barPixels > 200);
 }
 
-TEST_CASE("keys typed into the viewer (xdotool under Xvfb): F1 lists every control view --help lists, T colours by trust, W walks, N steps onto a reference, R saves the walk, Ctrl+Q quits") {
+TEST_CASE("keys typed into the viewer (xdotool under Xvfb): F1 lists every control view --help lists, T colours by trust, W walks, N steps onto a reference, R saves the walk, V exports it as a video, Ctrl+Q quits") {
   testing::TemporaryDirectory directory;
   testing::writeAnalyticDataset(directory / "data", 4, 3, 256, 1);
   // A person at the keyboard: each key waits for the screenshot that shows its effect.
@@ -255,6 +255,8 @@ xdotool keydown w; sleep 2; xdotool keyup w
 xdotool key n; sleep 1
 xdotool key r
 for i in $(seq 1 600); do [ -e walk.txt ] && break; sleep 0.1; done
+xdotool key v
+for i in $(seq 1 1800); do [ -e walk.mp4 ] && break; sleep 0.1; done
 xdotool key ctrl+q
 wait $viewer
 )";
@@ -327,6 +329,19 @@ wait $viewer
     nearestSample = std::min(nearestSample, glm::distance(glm::vec2(walk.poses.back().position), glm::vec2(dataset.sample(i).position)));
   }
   CHECK(nearestSample < 1e-3f);
+
+  // V: the walk as a video at the window's size, every 1/30 s of it, its end included.
+  REQUIRE(std::filesystem::exists(directory / "walk.mp4"));
+  const VideoInfo video = readVideoInfo(directory / "walk.mp4");
+  CHECK(video.width == 1280);
+  CHECK(video.height == 720);
+  CHECK(size_t(video.frames) == frameCount(walk, 30.0));
+  CHECK(video.seconds == doctest::Approx(double(frameCount(walk, 30.0)) / 30.0).epsilon(0.01));
+  std::vector<std::string> videos;
+  for (const auto& entry : std::filesystem::directory_iterator(directory.path())) {
+    if (entry.path().filename().string().find(".mp4") != std::string::npos) videos.push_back(entry.path().filename().string());
+  }
+  CHECK(videos == std::vector<std::string>{"walk.mp4"});  // no temporary file left beside it
 }
 
 TEST_CASE("view --help lists every key and mouse control") {

@@ -244,6 +244,7 @@ private:
     if (key == GLFW_KEY_ESCAPE) cancel();
     if (key == GLFW_KEY_R) toggleRecording(state_.walkPath, state_.clock);
     if (key == GLFW_KEY_P) togglePlayback(state_.walkPath, state_.clock);
+    if (key == GLFW_KEY_V && !export_) state_.exportRequested = true;
     if (key == GLFW_KEY_N || key == GLFW_KEY_B) teleportToReference(key == GLFW_KEY_B);
     if (key == GLFW_KEY_T) toggleOverlay(ViewOverlay::Trust);
     if (key == GLFW_KEY_E) toggleOverlay(ViewOverlay::Error);

@@ -19,6 +19,7 @@ constexpr std::array kControls = {
     ViewerControl{"E", "near a sample or held-out probe: the per-pixel error of its reconstruction against it"},
     ViewerControl{"R", "record the walk; again: stop and save it (the Walk tools' file, walk.txt)"},
     ViewerControl{"P", "play the walk in real time; again: stop"},
+    ViewerControl{"V", "export the walk as a video at the window's size (the Walk tools' file, walk.mp4)"},
     ViewerControl{"Esc", "stop playing, or cancel a video export"},
     ViewerControl{"F12", "save a screenshot of the window (triwalk_screenshot_NNN.png)"},
     ViewerControl{"Ctrl+Q", "quit (a recording still going is saved)"},

@@ -36,7 +36,7 @@ void drawWalkPanel(ViewerState& state) {
   ImGui::SameLine();
   if (state.exportFrames > 0) {
     ImGui::ProgressBar(float(state.exportFrame) / float(state.exportFrames), ImVec2(-1.0f, 0.0f));
-  } else if (ImGui::Button("export video")) {
+  } else if (ImGui::Button("export video (V)")) {
     state.exportRequested = true;
   }
   if (!walk.message.empty()) {

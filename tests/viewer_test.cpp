@@ -102,13 +102,24 @@ TEST_CASE("the viewer starts with the scene filling the window, and remembers th
   const Rgb8Image whole = readPng(screenshot);
   CHECK(distinctColours(whole, 900, 620, 1275, 715) > 200);
   CHECK(mapBackground(whole, 0, 0, 1280, 720) == 0);
+  // The view covers the window: against the view alone (--hide-ui), only the hint's letters differ.
+  REQUIRE(runTriwalk(directory, view + " --hide-ui").status == 0);
+  const Rgb8Image alone = readPng(screenshot);
+  size_t same = 0;
+  for (size_t i = 0; i < whole.pixels.size(); ++i) same += whole.pixels[i] == alone.pixels[i];
+  const double coverage = double(same) / double(whole.pixels.size());
+  INFO("the view covers " << coverage << " of the window at start");
+  CHECK(coverage >= 0.99);
   CHECK_FALSE(std::filesystem::exists(directory / "config" / "triwalk" / "viewer.json"));  // a scripted run keeps nothing
 
   // As Tab leaves it: shown.
   std::filesystem::create_directories(directory / "config" / "triwalk");
   writeTextFileAtomically(directory / "config" / "triwalk" / "viewer.json", "{\"sidebar\": true}\n");
   REQUIRE(runTriwalk(directory, view).status == 0);
-  CHECK(mapBackground(readPng(screenshot), 860, 40, 1275, 140) > 2000);
+  const Rgb8Image withTools = readPng(screenshot);
+  CHECK(mapBackground(withTools, 860, 40, 1275, 140) > 2000);
+  // With the tools, the view keeps the two thirds left of them: none of their pixels is over it.
+  CHECK(mapBackground(withTools, 0, 0, 850, 720) == 0);
   // --sidebar hidden overrides what was kept.
   REQUIRE(runTriwalk(directory, view + " --sidebar hidden").status == 0);
   CHECK(mapBackground(readPng(screenshot), 0, 0, 1280, 720) == 0);

@@ -133,6 +133,7 @@ Dataset Dataset::open(const std::filesystem::path& directory) {
     }
   }
   validateManifest(manifest, subject);
+  dataset.indexIds();
 
   for (const auto& [views, kind] : {std::pair(&manifest.samples, "sample"), std::pair(&manifest.probes, "probe")}) {
     for (const ViewRecord& view : *views) {
@@ -142,18 +143,21 @@ Dataset Dataset::open(const std::filesystem::path& directory) {
   return dataset;
 }
 
+void Dataset::indexIds() {
+  sampleIndexById_.clear();
+  probeIndexById_.clear();
+  for (size_t i = 0; i < manifest_.samples.size(); ++i) sampleIndexById_.emplace(manifest_.samples[i].id, int(i));
+  for (size_t i = 0; i < manifest_.probes.size(); ++i) probeIndexById_.emplace(manifest_.probes[i].id, int(i));
+}
+
 int Dataset::sampleIndexOfId(int id) const {
-  for (size_t i = 0; i < manifest_.samples.size(); ++i) {
-    if (manifest_.samples[i].id == id) return int(i);
-  }
-  return -1;
+  const auto found = sampleIndexById_.find(id);
+  return found == sampleIndexById_.end() ? -1 : found->second;
 }
 
 int Dataset::probeIndexOfId(int id) const {
-  for (size_t i = 0; i < manifest_.probes.size(); ++i) {
-    if (manifest_.probes[i].id == id) return int(i);
-  }
-  return -1;
+  const auto found = probeIndexById_.find(id);
+  return found == probeIndexById_.end() ? -1 : found->second;
 }
 
 int Dataset::downsamplingFactor(int width, const std::string& option) const {
@@ -196,6 +200,7 @@ Dataset Dataset::withViews(std::span<const int> indices, std::span<const int> pr
   for (int i : indices) subset.manifest_.samples.push_back(sample(i));
   subset.manifest_.probes.reserve(probeIndices.size());
   for (int i : probeIndices) subset.manifest_.probes.push_back(probe(i));
+  subset.indexIds();
   return subset;
 }
 

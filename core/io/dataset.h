@@ -26,6 +26,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace triwalk {
@@ -97,8 +98,12 @@ public:
   WalkableRegion walkableRegion() const;
 
 private:
+  // Ids to indices, so that reading a selection of n samples is O(n), not O(n^2).
+  void indexIds();
+
   std::filesystem::path directory_;
   Manifest manifest_;
+  std::unordered_map<int, int> sampleIndexById_, probeIndexById_;
 };
 
 // The largest width not above `limit` that divides panoramas of fullSize

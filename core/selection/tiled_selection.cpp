@@ -293,13 +293,21 @@ std::vector<int> seamColours(const std::vector<Tile>& tiles, const std::vector<s
       }
     }
   }
+  // A band holds many samples of the same neighbour: each pair once.
+  for (std::vector<int>& neighbours : reaches) {
+    std::sort(neighbours.begin(), neighbours.end());
+    neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+  }
   // Greedy in tile order: each tile the lowest colour none of the earlier
-  // tiles it reaches has.
+  // tiles it reaches has. A tile with n neighbours needs at most colour n,
+  // so the colours taken are marked in an array of n + 1 (not of every tile).
   std::vector<int> colours(tiles.size(), -1);
+  std::vector<char> taken;
   for (size_t k = 0; k < tiles.size(); ++k) {
-    std::vector<char> taken(tiles.size() + 1, 0);
+    taken.assign(reaches[k].size() + 1, 0);
     for (int other : reaches[k]) {
-      if (colours[size_t(other)] >= 0) taken[size_t(colours[size_t(other)])] = 1;
+      const int colour = colours[size_t(other)];
+      if (colour >= 0 && size_t(colour) < taken.size()) taken[size_t(colour)] = 1;
     }
     colours[k] = int(std::find(taken.begin(), taken.end(), 0) - taken.begin());
   }

@@ -353,6 +353,10 @@ TEST_CASE("selection.json round trip, and bad selections name the file and the p
       "removes a triangle the mesh does not have");
   testing::requireInputError([&] { readSelection(edit([](nlohmann::json& d) { d["version"] = 2; }), dataset); }, bad,
                              "unknown selection version 2");
+  // A selection of another data set (here: another fingerprint) is named as such.
+  testing::requireInputError(
+      [&] { readSelection(edit([](nlohmann::json& d) { d["dataset"]["fingerprint"] = "0123456789abcdef"; }), dataset); }, bad,
+      "made for another data set");
 
   // The errors the decimation read, which the viewer goes on with: a file
   // that names only the lattice gets decimate's defaults for the rest.

@@ -6,6 +6,7 @@
 #include "core/io/json_fields.h"
 #include "core/support/errors.h"
 #include "core/support/input_limits.h"
+#include "core/support/stable_hash.h"
 
 #include <algorithm>
 #include <cmath>
@@ -141,6 +142,19 @@ Dataset Dataset::open(const std::filesystem::path& directory) {
     }
   }
   return dataset;
+}
+
+std::string Dataset::fingerprint() const {
+  StableHash hash;
+  hash.addValue(manifest_.width);
+  hash.addValue(manifest_.height);
+  for (const ViewRecord& view : manifest_.samples) {
+    hash.addValue(view.id);
+    hash.addValue(view.position);
+  }
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash.value()));
+  return text;
 }
 
 void Dataset::indexIds() {

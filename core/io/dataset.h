@@ -63,6 +63,10 @@ public:
   const std::filesystem::path& directory() const { return directory_; }
   std::filesystem::path manifestPath() const { return directory_ / kManifestFileName; }
   int sampleCount() const { return int(manifest_.samples.size()); }
+  // 16 hex digits that name the samples (their ids and positions) and the
+  // panorama size: a selection records it, so that one made for another
+  // data set is refused as such.
+  std::string fingerprint() const;
   int probeCount() const { return int(manifest_.probes.size()); }
   const ViewRecord& sample(int index) const { return manifest_.samples.at(size_t(index)); }
   const ViewRecord& probe(int index) const { return manifest_.probes.at(size_t(index)); }

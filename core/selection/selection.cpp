@@ -244,7 +244,10 @@ void writeSelection(const std::filesystem::path& path, const Selection& selectio
   nlohmann::json document = {{"format", "triwalk-selection"},
                              {"version", kSelectionFormatVersion},
                              {"method", selection.method},
-                             {"dataset", {{"scene", dataset.manifest().scene}, {"samples", dataset.sampleCount()}}},
+                             {"dataset",
+                              {{"scene", dataset.manifest().scene},
+                               {"samples", dataset.sampleCount()},
+                               {"fingerprint", dataset.fingerprint()}}},
                              {"settings", selection.settings},
                              {"stop_reason", selection.stopReason},
                              {"samples", samples},
@@ -266,6 +269,16 @@ Selection readSelection(const std::filesystem::path& path, const Dataset& datase
   if (version != kSelectionFormatVersion) {
     root.fail("unknown selection version " + std::to_string(version) + " (this triwalk reads version " +
               std::to_string(kSelectionFormatVersion) + ")");
+  }
+  // Made for another data set: said as such, before anything in it is read against this one.
+  if (root.has("dataset")) {
+    const JsonObject made = root.object("dataset");
+    if (made.has("fingerprint") && made.string("fingerprint") != dataset.fingerprint()) {
+      root.fail("made for another data set (scene '" + made.stringOr("scene", "") + "', " +
+                std::to_string(made.has("samples") ? made.integer("samples") : 0) + " samples) than " +
+                dataset.manifestPath().string() + " (scene '" + dataset.manifest().scene + "', " +
+                std::to_string(dataset.sampleCount()) + " samples)");
+    }
   }
   const SelectionReader reader(dataset, file);
   Selection selection;

@@ -449,7 +449,7 @@ TEST_CASE("capture --scene builtin-floor:2x1 captures the floor's own region at 
 
 namespace triwalk {
 
-TEST_CASE("render warns in one line when its frames stand outside the walkable region, and synth refuses an --out it would not use") {
+TEST_CASE("render warns in one line when its frames stand outside the walkable region; synth refuses an --out it would not use and replaces its own as a whole") {
   testing::TemporaryDirectory directory;
   testing::writeAnalyticDataset(directory / "data", 3, 3, 64, 1);
   const std::string data = " --dataset " + (directory / "data").string();
@@ -466,6 +466,22 @@ TEST_CASE("render warns in one line when its frames stand outside the walkable r
   CHECK(synth.status != 0);
   CHECK(synth.err.find("--out excludes --all-probes") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(directory / "images"));
+
+  // synth's --out is replaced as a whole: its images, again, and nothing of an earlier run; a folder of other files is refused.
+  const std::string reconstruct = "synth" + data + " --refs 0,1,3 --truth 4 --out " + (directory / "images").string();
+  REQUIRE(runTriwalk(directory, reconstruct).status == 0);
+  writeTextFileAtomically(directory / "images" / "stale.txt", "an earlier run's\n");
+  REQUIRE(runTriwalk(directory, reconstruct).status == 0);
+  std::vector<std::string> images;
+  for (const auto& entry : std::filesystem::directory_iterator(directory / "images")) images.push_back(entry.path().filename().string());
+  std::sort(images.begin(), images.end());
+  CHECK(images == std::vector<std::string>{"heatmap.png", "reconstruction.png", "truth.png"});
+  std::filesystem::create_directories(directory / "notes");
+  writeTextFileAtomically(directory / "notes" / "mine.txt", "keep\n");
+  const RunResult foreign = runTriwalk(directory, "synth" + data + " --refs 0,1,3 --truth 4 --out " + (directory / "notes").string());
+  CHECK(foreign.status != 0);
+  CHECK(std::count(foreign.err.begin(), foreign.err.end(), '\n') == 1);
+  CHECK(std::filesystem::exists(directory / "notes" / "mine.txt"));
 }
 
 

@@ -10,6 +10,7 @@
 #include "core/io/dataset.h"
 #include "core/io/png_io.h"
 #include "core/io/simplified_mesh_store.h"
+#include "core/io/staged_directory.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 
@@ -17,6 +18,7 @@
 #include <cstdio>
 #include <memory>
 #include <numeric>
+#include <optional>
 
 namespace triwalk {
 
@@ -148,6 +150,13 @@ void registerSynthCommand(CLI::App& app) {
     std::unique_ptr<Panorama> truth;
     if (truthView) truth = std::make_unique<Panorama>(dataset.loadView(*truthView, a.width));
 
+    // --out is replaced as a whole when this run is done (an earlier synth's
+    // folder may be; any other non-empty folder is refused before the work).
+    std::optional<StagedDirectory> staging;
+    if (!a.out.empty()) staging.emplace(a.out, "reconstruction.png", "an earlier synth");
+    auto write = [&](const std::string& name, const Rgb8Image& image) {
+      staging->writeFile(name, [&](const std::filesystem::path& path) { writePng(path, image); });
+    };
     const Reconstruction result = reconstruct(dataset, references, at, a.width, truth.get(), synthesis, errors);
     const BlendedView& blended = result.view.blended;
     const double pixels = double(blended.hole.size());
@@ -156,20 +165,18 @@ void registerSynthCommand(CLI::App& app) {
                 blended.color.width, blended.color.height, at.x, at.y, at.z, references.size(),
                 100.0 * double(result.view.fill.holesBefore) / pixels, 100.0 * double(result.view.fill.unfilled) / pixels,
                 holeModeName(synthesis.holes));
-    if (!a.out.empty()) {
-      std::filesystem::create_directories(a.out);
-      writePng(std::filesystem::path(a.out) / "reconstruction.png", displayImage(blended, synthesis.holes));
-    }
+    if (staging) write("reconstruction.png", displayImage(blended, synthesis.holes));
     if (!truth) {
+      if (staging) staging->commit();
       std::printf("no ground truth at this position (give --truth to compare)\n");
       return;
     }
     std::printf("truth %s: R %.5f  B %.3f%%  E %.4f\n", truthView->file.c_str(), result.error.rms,
                 result.error.badPercent, result.error.total);
-    if (!a.out.empty()) {
-      writePng(std::filesystem::path(a.out) / "truth.png", toDisplayImage(truth->color));
-      writePng(std::filesystem::path(a.out) / "heatmap.png", withColourBar(heatmapImage(result.perPixel, 0.25f), 0.25f,
-                                                                                   "per-pixel RMS colour difference to the truth"));
+    if (staging) {
+      write("truth.png", toDisplayImage(truth->color));
+      write("heatmap.png", withColourBar(heatmapImage(result.perPixel, 0.25f), 0.25f, "per-pixel RMS colour difference to the truth"));
+      staging->commit();
       std::printf("wrote reconstruction.png, truth.png, heatmap.png (per-pixel RMS difference, red = 0.25) to %s\n",
                   a.out.c_str());
     }

@@ -561,6 +561,21 @@ TEST_CASE("render --video encodes every frame at the asked rate into a file that
                                     (videos / "both.mkv").string(), true).status == 0);
   CHECK(std::filesystem::exists(directory / "frames" / "frame_0011.png"));
   CHECK(readVideoInfo(videos / "both.mkv").frames == 12);
+  // Side outputs inside --out, which does not exist yet, are part of it.
+  const RunResult inside = runTriwalk(directory, render + " --out " + (directory / "run" / "out").string() + " --video " +
+                                                     (directory / "run" / "out" / "walk.mp4").string() + " --stats " +
+                                                     (directory / "run" / "out" / "stats.json").string(), true);
+  INFO(inside.err);
+  REQUIRE(inside.status == 0);
+  CHECK(readVideoInfo(directory / "run" / "out" / "walk.mp4").frames == 12);
+  CHECK(std::filesystem::exists(directory / "run" / "out" / "stats.json"));
+  CHECK(std::filesystem::exists(directory / "run" / "out" / "frame_0011.png"));
+  // Elsewhere, their folder must exist: refused before any frame.
+  const RunResult nowhere = runTriwalk(directory, render + " --out " + (directory / "run2").string() + " --stats " +
+                                                      (directory / "missing" / "stats.json").string(), true);
+  CHECK(nowhere.status != 0);
+  CHECK(nowhere.err.find("--stats: cannot write") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(directory / "run2"));
 
   // Refused before any frame, and nothing left behind.
   const RunResult odd = runTriwalk(directory, "render --dataset " + (directory / "data").string() +

@@ -119,8 +119,7 @@ void registerRenderCommand(CLI::App& app) {
                       "earlier render); optional with --video")->check(writableDirectory());
   command->add_option("--video", arguments->video,
                       "Also (or, without --out, only) encode the frames as a video: H.264 in the container the "
-                      "extension names (.mp4, .mkv, .mov), written whole or not at all")
-      ->check(writableFile());
+                      "extension names (.mp4, .mkv, .mov), written whole or not at all; inside --out, part of it");
   command->add_option("--fps", arguments->fps, "Frames a second of --video, and at which a recorded walk (a path with seconds) is rendered")
       ->capture_default_str()->check(CLI::Range(1, 240));
   command->add_option("--size", arguments->size, "Frame size WIDTHxHEIGHT")->capture_default_str();
@@ -141,8 +140,7 @@ void registerRenderCommand(CLI::App& app) {
                     "write it and a difference heatmap beside the frame, and print PSNR and SSIM against it");
   command->add_option("--stats", arguments->stats,
                       "Write per-frame statistics (holes before the fill, left after it, frame time; PSNR and SSIM "
-                      "with --compare or --truth) to this JSON file")
-      ->check(writableFile());
+                      "with --compare or --truth) to this JSON file; inside --out, part of it");
   command->add_flag("--show-sources", arguments->showSources, "Color each pixel by the references that made it");
   command->add_option("--cache-mb", arguments->cacheMegabytes, "Memory for resident panoramas, MiB")
       ->capture_default_str()->check(CLI::Range(size_t(1), size_t(1) << 24));
@@ -152,6 +150,12 @@ void registerRenderCommand(CLI::App& app) {
   command->callback([arguments] {
     const Arguments& a = *arguments;
     if (a.out.empty() && a.video.empty()) throw InputError("--out", "give a directory for the frames, or --video FILE");
+    // Side outputs inside --out are written into it, and replaced with it
+    // as a whole; elsewhere their folder must exist.
+    const std::optional<std::filesystem::path> statsInOut = pathInside(a.stats, a.out);
+    const std::optional<std::filesystem::path> videoInOut = pathInside(a.video, a.out);
+    if (!a.stats.empty() && !statsInOut) checkWritableFile(a.stats, "--stats");
+    if (!a.video.empty() && !videoInOut) checkWritableFile(a.video, "--video");
     if (a.out.empty() && (a.compare || a.truth)) {
       throw InputError("--out", "--compare and --truth write their images beside the frames: give --out DIR");
     }
@@ -215,7 +219,9 @@ void registerRenderCommand(CLI::App& app) {
     std::optional<StagedDirectory> staging;
     if (!a.out.empty()) staging.emplace(a.out, kRenderOutputMarker, "an earlier render");
     std::optional<VideoWriter> video;
-    if (!a.video.empty()) video.emplace(a.video, width, height, a.fps);
+    const std::filesystem::path videoPath = videoInOut ? staging->path() / *videoInOut : std::filesystem::path(a.video);
+    if (videoInOut) std::filesystem::create_directories(videoPath.parent_path());
+    if (!a.video.empty()) video.emplace(videoPath, width, height, a.fps);
     std::map<int, std::unique_ptr<WarpSource>> cpuSources;
     nlohmann::json statistics = {{"holes", holeModeName(synthesis.holes)},
                                  {"blend_weights", blendWeightsName(synthesis.blend.weights)},
@@ -283,15 +289,15 @@ void registerRenderCommand(CLI::App& app) {
     }
     progress.finish();
     if (video) video->commit();
-    if (staging) staging->commit();
+    // What is printed below about the video is read back before the folder moves.
+    const std::optional<VideoInfo> written = video ? std::optional<VideoInfo>(readVideoInfo(videoPath)) : std::nullopt;
     std::printf("rendered %zu frames %dx%d%s%s (holes %s, %s weights), %.1f ms a frame with loading\n", poses.size(),
                 width, height, a.out.empty() ? "" : " into ", a.out.c_str(), holeModeName(synthesis.holes),
                 blendWeightsName(synthesis.blend.weights), frameMilliseconds / double(poses.size()));
-    if (video) {
+    if (written) {
       // Read back: the file decodes, frame for frame.
-      const VideoInfo written = readVideoInfo(a.video);
-      std::printf("wrote %s: %d frames of %dx%d at %d a second, %.2f s (%s)\n", a.video.c_str(), written.frames,
-                  written.width, written.height, a.fps, written.seconds, video->codecName().c_str());
+      std::printf("wrote %s: %d frames of %dx%d at %d a second, %.2f s (%s)\n", a.video.c_str(), written->frames,
+                  written->width, written->height, a.fps, written->seconds, video->codecName().c_str());
     }
     if (truthRenderer) {
       const FrameScores scores = summarizeScores(truthPsnr, truthSsim);
@@ -304,8 +310,15 @@ void registerRenderCommand(CLI::App& app) {
                   scores.meanPsnr, scores.meanSsim, scores.worstPsnr, scores.worstSsim, scores.worstShare.psnr,
                   scores.worstShare.ssim);
     }
+    if (statsInOut) {
+      staging->writeFile(statsInOut->string(), [&](const std::filesystem::path& path) {
+        std::filesystem::create_directories(path.parent_path());
+        writeJsonFile(path, statistics);
+      });
+    }
+    if (staging) staging->commit();
     if (!a.stats.empty()) {
-      writeJsonFile(a.stats, statistics);
+      if (!statsInOut) writeJsonFile(a.stats, statistics);
       std::printf("wrote frame statistics to %s\n", a.stats.c_str());
     }
     if (a.compare) {

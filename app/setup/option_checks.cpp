@@ -90,17 +90,34 @@ CLI::Validator coordinate() {
 
 CLI::Validator errorStride() { return CLI::IsMember({1, 2, 4}); }
 
+namespace {
+
+// What is wrong with writing this file, or nothing.
+std::string writableFileProblem(const std::string& text) {
+  const std::filesystem::path path(text);
+  std::error_code error;
+  if (text.empty()) return "empty file name";
+  if (std::filesystem::is_directory(path, error)) return text + " is a folder, not a file";
+  if (!isWritableDirectory(folderOf(path))) return "cannot write " + text + ": no writable folder " + folderOf(path).string();
+  return {};
+}
+
+}  // namespace
+
 CLI::Validator writableFile() {
-  return CLI::Validator(
-      [](std::string& text) {
-        const std::filesystem::path path(text);
-        std::error_code error;
-        if (text.empty()) return std::string("empty file name");
-        if (std::filesystem::is_directory(path, error)) return text + " is a folder, not a file";
-        if (!isWritableDirectory(folderOf(path))) return "cannot write " + text + ": no writable folder " + folderOf(path).string();
-        return std::string();
-      },
-      "FILE");
+  return CLI::Validator([](std::string& text) { return writableFileProblem(text); }, "FILE");
+}
+
+void checkWritableFile(const std::string& file, const std::string& option) {
+  if (const std::string problem = writableFileProblem(file); !problem.empty()) throw InputError(option, problem);
+}
+
+std::optional<std::filesystem::path> pathInside(const std::string& file, const std::string& folder) {
+  if (file.empty() || folder.empty()) return std::nullopt;
+  const std::filesystem::path relative =
+      std::filesystem::path(file).lexically_normal().lexically_relative(std::filesystem::path(folder).lexically_normal());
+  if (relative.empty() || relative.is_absolute() || *relative.begin() == ".." || *relative.begin() == ".") return std::nullopt;
+  return relative;
 }
 
 CLI::Validator tileCount() {

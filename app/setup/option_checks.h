@@ -7,6 +7,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
+#include <optional>
+#include <string>
+
 namespace triwalk {
 
 // Numbers >= 0 (or > 0), with a message that names the bound plainly
@@ -22,6 +26,12 @@ CLI::Validator coordinate();
 CLI::Validator errorStride();
 // An output file: its folder exists and is writable, and it is not a folder.
 CLI::Validator writableFile();
+// The same, said by the command itself (a side output may lie inside the
+// command's output folder, which does not exist yet): InputError naming the option.
+void checkWritableFile(const std::string& file, const std::string& option);
+// file's path inside folder when it lies in it (written lexically: "a/b"
+// in "a"), else nothing.
+std::optional<std::filesystem::path> pathInside(const std::string& file, const std::string& folder);
 // An output folder: it is a writable folder, or it can be created in the
 // nearest folder above it that exists.
 CLI::Validator writableDirectory();

@@ -449,7 +449,7 @@ TEST_CASE("capture --scene builtin-floor:2x1 captures the floor's own region at 
 
 namespace triwalk {
 
-TEST_CASE("render warns in one line when its frames stand outside the walkable region; synth refuses an --out it would not use and replaces its own as a whole") {
+TEST_CASE("render warns in one line when its frames stand outside the walkable region, and synth refuses an --out it would not use and replaces its own as a whole") {
   testing::TemporaryDirectory directory;
   testing::writeAnalyticDataset(directory / "data", 3, 3, 64, 1);
   const std::string data = " --dataset " + (directory / "data").string();

@@ -242,8 +242,8 @@ TEST_CASE("an irregular data set without paths decimates, evaluates against ever
     CHECK(row["probe_errors"].size() == 6);
     CHECK(row["samples"].get<int>() >= 3);
   }
-  CHECK(methods == std::vector<std::string>{"initial", "uniform", "edge_collapse", "kmedoids", "geodesic_kmedoids",
-                                            "farthest_point", "random"});
+  CHECK(methods == std::vector<std::string>{"initial", "uniform", "edge_collapse", "kmedoids", "uniform_region",
+                                            "geodesic_kmedoids", "farthest_point", "random"});
   // Every sample is a vertex of the dense triangulation; what edge collapse
   // leaves outside its triangles, decimate said too (or said nothing).
   CHECK(document["rows"][0]["samples_outside"].get<int>() == 0);
@@ -272,7 +272,7 @@ TEST_CASE("an irregular data set without paths decimates, evaluates against ever
 
   // --baselines-out: each baseline an ordinary selection of the same count,
   // the very one eval judged (its probe errors again from the file).
-  for (const char* method : {"uniform", "kmedoids", "geodesic_kmedoids", "farthest_point", "random"}) {
+  for (const char* method : {"uniform", "kmedoids", "uniform_region", "geodesic_kmedoids", "farthest_point", "random"}) {
     INFO(method);
     const std::filesystem::path file = directory / "baselines" / (std::string(method) + ".json");
     const Selection baseline = readSelection(file, Dataset::open(directory / "data"));

@@ -9,6 +9,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -95,4 +96,39 @@ TEST_CASE("farthest-point sampling by walking: each pick is the farthest left, s
   // The second pick is a west end of the hairpin, a corridor's length away by walking.
   CHECK(positions[size_t(picks[1].first)].x < 0.5);
   CHECK(picks[1].second > 8.5f);
+}
+
+TEST_CASE("the region-aware uniform baseline keeps the count: missing samples go to the corridors the lattice left, extra ones leave where nodes crowd") {
+  const WalkableRegion region = hairpin();
+  const std::vector<glm::dvec2> positions = latticeIn(region);
+  const WalkingDistances walking(positions, region);
+  auto at = [&](glm::dvec2 p) {
+    for (int i = 0; i < int(positions.size()); ++i) {
+      if (glm::length(positions[size_t(i)] - p) < 1e-9) return i;
+    }
+    return -1;
+  };
+  // A lattice of one node at the turn: two more go to the two west ends,
+  // one in each corridor (by straight line they are 1 m apart, by walking 17.75 m).
+  const int turn = at({9.625, 1.125});
+  REQUIRE(turn >= 0);
+  const std::vector<int> grown = regionUniformSelection({turn}, walking, 3);
+  REQUIRE(grown.size() == 3);
+  CHECK(std::count(grown.begin(), grown.end(), turn) == 1);
+  int south = 0, north = 0;
+  for (int s : grown) {
+    if (s == turn) continue;
+    CHECK(positions[size_t(s)].x < 0.5);
+    south += inSouthCorridor(positions[size_t(s)]);
+    north += inNorthCorridor(positions[size_t(s)]);
+  }
+  CHECK(south == 1);
+  CHECK(north == 1);
+  // Three nodes, two of them side by side: the later of the pair leaves.
+  const int a = at({2.125, 0.375}), b = at({2.375, 0.375}), far = at({2.125, 1.875});
+  REQUIRE((a >= 0 && b >= 0 && far >= 0));
+  const std::vector<int> trimmed = regionUniformSelection({a, b, far}, walking, 2);
+  CHECK(trimmed == std::vector<int>{std::min(a, b), far});
+  // The count asked for, whatever the lattice gives.
+  for (const int count : {1, 5, 17}) CHECK(regionUniformSelection({a, b, far}, walking, count).size() == size_t(count));
 }

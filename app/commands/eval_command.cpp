@@ -29,6 +29,7 @@ namespace {
 const char* label(const std::string& method) {
   if (method == "initial") return "initial (a)";
   if (method == "uniform") return "uniform (b)";
+  if (method == "uniform_region") return "uniform, region-aware";
   if (method == "edge_collapse") return "edge collapse (c)";
   if (method == "kmedoids") return "k-medoids";
   if (method == "geodesic_kmedoids") return "k-medoids, walking";
@@ -181,6 +182,7 @@ void registerEvalCommand(CLI::App& app) {
     rows.push_back({"edge_collapse", selectionMesh(selection, dataset)});
     addBaseline("kmedoids", [&] { return kMedoidsSelection(positions, count); });
     const WalkingDistances walking(positions, dataset.walkableRegion());
+    addBaseline("uniform_region", [&] { return regionUniformSelection(uniformSelection(dataset, count), walking, count); });
     addBaseline("geodesic_kmedoids", [&] { return geodesicKMedoidsSelection(walking, count); });
     addBaseline("farthest_point", [&] { return farthestPointSelection(walking, count); });
     addBaseline("random", [&] { return randomSelection(dataset.sampleCount(), count, a.seed); });

@@ -117,8 +117,8 @@ struct SuiteRow {
   double dense = 0.0, uniform = 0.0, kmedoids = 0.0, random = 0.0, edgeCollapse = 0.0;
   // By walking distance (walking_distances.h); NaN where it could not be
   // triangulated at the count.
-  double walkingKMedoids = 0.0, farthestPoint = 0.0;
-  Comparison versusUniform, versusKMedoids, versusWalkingKMedoids, versusFarthestPoint;
+  double walkingKMedoids = 0.0, farthestPoint = 0.0, regionUniform = 0.0;
+  Comparison versusUniform, versusKMedoids, versusWalkingKMedoids, versusFarthestPoint, versusRegionUniform;
   double gapClosed = 0.0;  // (uniform - edge collapse) / (uniform - dense)
   double selectionSeconds = 0.0;
 };
@@ -142,17 +142,20 @@ std::string formatVersus(double baseline, const Comparison& comparison) {
 std::string tableOf(const std::vector<SuiteRow>& rows, const std::vector<double>& fractions) {
   std::ostringstream out;
   char line[768];
-  out << "| scene | samples | dense | uniform | k-medoids | k-medoids, walking | farthest point, walking | random | "
-         "edge collapse | vs uniform | vs k-medoids | vs k-medoids, walking | vs farthest point, walking | gap closed |\n"
-         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  out << "| scene | samples | dense | uniform | uniform, region-aware | k-medoids | k-medoids, walking | farthest point, "
+         "walking | random | edge collapse | vs uniform | vs uniform, region-aware | vs k-medoids | vs k-medoids, walking | "
+         "vs farthest point, walking | gap closed |\n"
+         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const SuiteRow& r : rows) {
     const std::string samples = r.reachedCount == r.count
                                     ? std::to_string(r.count)
                                     : std::to_string(r.reachedCount) + " (target " + std::to_string(r.count) + ")";
-    std::snprintf(line, sizeof line, "| %s | %s | %.4f | %.4f (%d) | %.4f | %s | %s | %.4f | %.4f | %s | %s | %s | %s | %.0f%% |\n",
-                  r.scene.c_str(), samples.c_str(), r.dense, r.uniform, r.uniformCount, r.kmedoids,
-                  formatMean(r.walkingKMedoids).c_str(), formatMean(r.farthestPoint).c_str(), r.random, r.edgeCollapse,
-                  formatPercent(r.versusUniform).c_str(), formatPercent(r.versusKMedoids).c_str(),
+    std::snprintf(line, sizeof line,
+                  "| %s | %s | %.4f | %.4f (%d) | %s | %.4f | %s | %s | %.4f | %.4f | %s | %s | %s | %s | %s | %.0f%% |\n",
+                  r.scene.c_str(), samples.c_str(), r.dense, r.uniform, r.uniformCount, formatMean(r.regionUniform).c_str(),
+                  r.kmedoids, formatMean(r.walkingKMedoids).c_str(), formatMean(r.farthestPoint).c_str(), r.random,
+                  r.edgeCollapse, formatPercent(r.versusUniform).c_str(),
+                  formatVersus(r.regionUniform, r.versusRegionUniform).c_str(), formatPercent(r.versusKMedoids).c_str(),
                   formatVersus(r.walkingKMedoids, r.versusWalkingKMedoids).c_str(),
                   formatVersus(r.farthestPoint, r.versusFarthestPoint).c_str(), 100.0 * r.gapClosed);
     out << line;
@@ -357,6 +360,10 @@ void registerSuiteCommand(CLI::App& app) {
         const std::vector<double> walkingKMedoids =
             walkingBaseline([&] { return geodesicKMedoidsSelection(walking, reached); });
         const std::vector<double> farthestPoint = walkingBaseline([&] { return farthestPointSelection(walking, reached); });
+        const std::vector<double> regionUniform = walkingBaseline(
+            [&] { return regionUniformSelection(uniformSelection(dataset, reached), walking, reached); });
+        row.regionUniform = regionUniform.empty() ? std::nan("") : mean(regionUniform);
+        if (!regionUniform.empty()) row.versusRegionUniform = compare(edgeCollapse, regionUniform);
         row.walkingKMedoids = walkingKMedoids.empty() ? std::nan("") : mean(walkingKMedoids);
         row.farthestPoint = farthestPoint.empty() ? std::nan("") : mean(farthestPoint);
         if (!walkingKMedoids.empty()) row.versusWalkingKMedoids = compare(edgeCollapse, walkingKMedoids);
@@ -389,6 +396,7 @@ void registerSuiteCommand(CLI::App& app) {
                              {"kmedoids", kmedoids},
                              {"geodesic_kmedoids", walkingKMedoids},
                              {"farthest_point", farthestPoint},
+                             {"uniform_region", regionUniform},
                              {"random", random}}}});
         rows.push_back(row);
         progress.advance();

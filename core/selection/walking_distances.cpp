@@ -117,6 +117,44 @@ std::vector<int> farthestPointSelection(const WalkingDistances& distances, int c
   return samples;
 }
 
+std::vector<int> regionUniformSelection(std::vector<int> lattice, const WalkingDistances& distances, int count) {
+  const int n = distances.count();
+  TRIWALK_CHECK(count >= 1 && count <= n, "the region-aware uniform baseline needs 1 <= count <= samples");
+  std::sort(lattice.begin(), lattice.end());
+  lattice.erase(std::unique(lattice.begin(), lattice.end()), lattice.end());
+  std::vector<char> chosen(size_t(n), 0);
+  for (int s : lattice) chosen[size_t(s)] = 1;
+  // Walking distance from each sample to its nearest chosen one.
+  std::vector<float> nearest(size_t(n), std::numeric_limits<float>::infinity());
+  for (int i = 0; i < n; ++i) {
+    for (int s : lattice) nearest[size_t(i)] = std::min(nearest[size_t(i)], distances(i, s));
+  }
+  while (int(lattice.size()) < count) {
+    int farthest = -1;
+    for (int i = 0; i < n; ++i) {
+      if (!chosen[size_t(i)] && (farthest < 0 || nearest[size_t(i)] > nearest[size_t(farthest)])) farthest = i;
+    }
+    chosen[size_t(farthest)] = 1;
+    lattice.push_back(farthest);
+    for (int i = 0; i < n; ++i) nearest[size_t(i)] = std::min(nearest[size_t(i)], distances(i, farthest));
+  }
+  while (int(lattice.size()) > count) {
+    // The chosen sample with the nearest other chosen one.
+    size_t redundant = 0;
+    float redundantDistance = std::numeric_limits<float>::infinity();
+    for (size_t a = 0; a < lattice.size(); ++a) {
+      float closest = std::numeric_limits<float>::infinity();
+      for (size_t b = 0; b < lattice.size(); ++b) {
+        if (a != b) closest = std::min(closest, distances(lattice[a], lattice[b]));
+      }
+      if (closest <= redundantDistance) redundantDistance = closest, redundant = a;
+    }
+    lattice.erase(lattice.begin() + ptrdiff_t(redundant));
+  }
+  std::sort(lattice.begin(), lattice.end());
+  return lattice;
+}
+
 std::vector<int> geodesicKMedoidsSelection(const WalkingDistances& distances, int count) {
   const int n = distances.count();
   std::vector<int> medoids;

@@ -42,6 +42,16 @@ std::vector<int> geodesicKMedoidsSelection(const WalkingDistances& distances, in
 // (the lower index on a tie). Sorted indices.
 std::vector<int> farthestPointSelection(const WalkingDistances& distances, int count);
 
+// The region-aware uniform baseline: a uniform lattice (uniformSelection)
+// brought to exactly count samples by walking distance. While it has
+// fewer, the sample farthest from its nearest chosen one joins: what the
+// lattice left furthest from every view, a room or corridor between its
+// nodes or beyond their reach (a part of the region no chosen sample
+// reaches first). While it has more, the chosen sample nearest to another
+// chosen one leaves: the lattice's most redundant node. Ties: the lower
+// index joins, the higher leaves. Sorted indices.
+std::vector<int> regionUniformSelection(std::vector<int> lattice, const WalkingDistances& distances, int count);
+
 // The same picks in the order they were made, with each one's walking
 // distance to its nearest earlier pick (infinity for the first).
 std::vector<std::pair<int, float>> farthestPointOrder(const WalkingDistances& distances, int count);

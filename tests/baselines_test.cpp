@@ -156,4 +156,23 @@ TEST_CASE("paired comparison of probe errors: mean difference, its standard erro
   CHECK(offset.candidateLower == 3);
 }
 
+TEST_CASE("views for an error: interpolated where a method's count curve crosses it, bounded outside it") {
+  const std::vector<std::pair<int, double>> curve = {{10, 2.0}, {20, 1.0}, {40, 0.5}};
+  // 1.5 lies halfway from 2.0 to 1.0: halfway from 10 to 20 views.
+  const ViewsForError halfway = viewsForError(curve, 1.5);
+  CHECK(halfway.bound == ViewsForError::Bound::Interpolated);
+  CHECK(halfway.views == doctest::Approx(15.0));
+  // On the second segment: 0.8 is 40% of the way from 1.0 to 0.5.
+  CHECK(viewsForError(curve, 0.8).views == doctest::Approx(28.0));
+  // Exactly a point's error: that point's count.
+  CHECK(viewsForError(curve, 1.0).views == doctest::Approx(20.0));
+  // Already there at the first count; never there.
+  const ViewsForError first = viewsForError(curve, 3.0), never = viewsForError(curve, 0.4);
+  CHECK(first.bound == ViewsForError::Bound::AtMost);
+  CHECK(formatViews(first) == "<= 10");
+  CHECK(never.bound == ViewsForError::Bound::MoreThan);
+  CHECK(formatViews(never) == "> 40");
+  CHECK(formatViews(halfway) == "15.0");
+}
+
 }  // namespace triwalk

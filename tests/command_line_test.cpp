@@ -242,8 +242,15 @@ TEST_CASE("an irregular data set without paths decimates, evaluates against ever
     CHECK(row["probe_errors"].size() == 6);
     CHECK(row["samples"].get<int>() >= 3);
   }
-  CHECK(methods == std::vector<std::string>{"initial", "uniform", "edge_collapse", "kmedoids", "uniform_region",
-                                            "geodesic_kmedoids", "farthest_point", "random"});
+  CHECK(methods == std::vector<std::string>{"initial", "uniform", "edge_collapse", "uniform_region", "kmedoids",
+                                            "geodesic_kmedoids", "farthest_point", "random", "greedy_insertion",
+                                            "insertion_refined"});
+  // Greedy insertion's selections are written beside the baselines', and
+  // every geometric baseline says how many views it needs for edge
+  // collapse's probe mean.
+  CHECK(std::filesystem::exists(directory / "baselines" / "insertion_refined.json"));
+  CHECK(document["views_for_edge_collapse_error"].size() == 6);
+  CHECK(eval.out.find("views each baseline needs for edge collapse's probe mean") != std::string::npos);
   // Every sample is a vertex of the dense triangulation; what edge collapse
   // leaves outside its triangles, decimate said too (or said nothing).
   CHECK(document["rows"][0]["samples_outside"].get<int>() == 0);
@@ -307,6 +314,13 @@ TEST_CASE("suite: each count selected with the selection's blend weights and wid
     const nlohmann::json& row = document["rows"][0];
     CHECK(row["samples"].get<int>() == 6);
     CHECK(row["probe_errors"]["edge_collapse"].size() == 6);
+    // Greedy insertion, alone and refined, at edge collapse's count, and the
+    // views every method needs for edge collapse's probe mean.
+    CHECK(row["probe_errors"]["greedy_insertion"].size() == 6);
+    CHECK(row["probe_errors"]["insertion_refined"].size() == 6);
+    CHECK(readSelection(out / "room" / "greedy_insertion_6.json", Dataset::open(out / "room" / "dataset")).samples.size() ==
+          row["edge_collapse_samples"].get<size_t>());
+    CHECK(row["views_for_edge_collapse_error"].size() == 8);
     CHECK(result.out.find("evaluation with errors at 64x32") != std::string::npos);
     const std::string evaluation = result.out.substr(result.out.find("evaluation with"));
     CHECK(evaluation.substr(0, evaluation.find('\n')).find("reliability weights") != std::string::npos);
@@ -352,6 +366,8 @@ TEST_CASE("suite: each count selected with the selection's blend weights and wid
   CHECK(reused["samples"].get<int>() == 6);
   CHECK(reused["edge_collapse_samples"].get<int>() == 9);
   CHECK(reused["probe_errors"]["kmedoids"] != byDefault["probe_errors"]["kmedoids"]);
+  // Greedy insertion follows edge collapse's new count.
+  CHECK(readSelection(out / "room" / "greedy_insertion_6.json", Dataset::open(out / "room" / "dataset")).samples.size() == 9);
 }
 
 TEST_CASE("import and export from the command line: a round trip, its report, and bad options in one line") {

@@ -23,7 +23,9 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <tuple>
 
@@ -1098,6 +1100,65 @@ TEST_CASE("a layer cache short of memory lowers its budget by the shortfall, nev
   CHECK(cache.bytes() <= floor);
   CHECK(cache.bytes() > 0);
   CHECK(availableMemoryBytes().has_value());
+}
+
+TEST_CASE("greedy insertion picks, at every step, the sample an exhaustive search picks") {
+  // An L-shaped floor, 7 x 6 samples 1 m apart (jittered, so that no two
+  // insertions tie), the north-east quarter walled off; errors grow with
+  // the distance to each reference and jump behind a wall.
+  RegionPolygon polygon;
+  polygon.outer = {{-0.5, -0.5}, {6.5, -0.5}, {6.5, 2.5}, {3.5, 2.5}, {3.5, 5.5}, {-0.5, 5.5}};
+  const WalkableRegion region({polygon}, "L");
+  std::vector<glm::dvec2> positions;
+  for (const glm::dvec2& p : testing::unitGrid(7, 6)) {
+    const glm::dvec2 jittered = p + 0.2 * glm::dvec2(std::sin(7.1 * p.x + 3.3 * p.y), std::cos(5.3 * p.x - 2.9 * p.y));
+    if (region.contains(jittered)) positions.push_back(jittered);
+  }
+  REQUIRE(positions.size() > 25);
+  const FormulaErrors::Formula formula = distanceAndSightErrors(positions, region);
+  // Starting from three neighbouring samples in the south-west corner.
+  const std::vector<int> start = {0, 1, 6};
+  REQUIRE(ViewMesh::delaunay(positions, start, "test", &region).vertexCount() == 3);
+  const int count = 12;
+
+  // Exhaustive: every free sample's insertion scored from scratch; the
+  // lowest mean error joins (the lower index on a tie).
+  std::vector<int> expected, references = start;
+  while (int(references.size()) < count) {
+    int best = -1;
+    double bestError = std::numeric_limits<double>::infinity();
+    for (int c = 0; c < int(positions.size()); ++c) {
+      if (std::find(references.begin(), references.end(), c) != references.end()) continue;
+      std::vector<int> tried = references;
+      tried.push_back(c);
+      const std::optional<ViewMesh> mesh = ViewMesh::tryDelaunay(positions, tried, &region);
+      if (!mesh) continue;
+      const double error = meanError(*mesh, formula);
+      if (error < bestError) best = c, bestError = error;
+    }
+    REQUIRE(best >= 0);
+    expected.push_back(best);
+    references.push_back(best);
+  }
+
+  for (const int priced : {0, 32}) {
+    CAPTURE(priced);
+    FormulaErrors errors(formula);
+    RefinementOptions options;
+    options.region = &region;
+    options.pricedSamples = priced;
+    const InsertionResult result = insertGreedily(positions, start, count, errors, options);
+    CHECK(result.inserted == expected);
+    REQUIRE(result.objectives.size() == expected.size());
+    // The objective after each step is the mean error of that selection.
+    std::vector<int> selection = start;
+    for (size_t step = 0; step < expected.size(); ++step) {
+      selection.push_back(result.inserted[step]);
+      const ViewMesh mesh = ViewMesh::delaunay(positions, selection, "test", &region);
+      CHECK(result.objectives[step] == doctest::Approx(meanError(mesh, formula)).epsilon(1e-12));
+    }
+    CHECK(ViewMesh(positions, result.triangles).vertexCount() == count);
+  }
 }
 
 }  // namespace triwalk

@@ -4,6 +4,7 @@
 // east end. By straight line the corridors are 1.2 m apart; by walking,
 // their west ends are 20 m apart.
 
+#include "core/geometry/view_mesh.h"
 #include "core/selection/baselines.h"
 #include "core/selection/walking_distances.h"
 
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 using namespace triwalk;
 
@@ -98,7 +100,7 @@ TEST_CASE("farthest-point sampling by walking: each pick is the farthest left, s
   CHECK(picks[1].second > 8.5f);
 }
 
-TEST_CASE("the region-aware uniform baseline keeps the count: missing samples go to the corridors the lattice left, extra ones leave where nodes crowd") {
+TEST_CASE("the region-aware uniform baseline keeps the count in views of triangles: a lone node gets the nearest samples, extra ones leave where nodes crowd") {
   const WalkableRegion region = hairpin();
   const std::vector<glm::dvec2> positions = latticeIn(region);
   const WalkingDistances walking(positions, region);
@@ -108,27 +110,45 @@ TEST_CASE("the region-aware uniform baseline keeps the count: missing samples go
     }
     return -1;
   };
-  // A lattice of one node at the turn: two more go to the two west ends,
-  // one in each corridor (by straight line they are 1 m apart, by walking 17.75 m).
-  const int turn = at({9.625, 1.125});
-  REQUIRE(turn >= 0);
-  const std::vector<int> grown = regionUniformSelection({turn}, walking, 3);
-  REQUIRE(grown.size() == 3);
-  CHECK(std::count(grown.begin(), grown.end(), turn) == 1);
-  int south = 0, north = 0;
-  for (int s : grown) {
-    if (s == turn) continue;
-    CHECK(positions[size_t(s)].x < 0.5);
-    south += inSouthCorridor(positions[size_t(s)]);
-    north += inNorthCorridor(positions[size_t(s)]);
+  auto sorted = [](std::vector<int> v) {
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  // Every chosen sample is a view of a triangle inside the region.
+  auto allServe = [&](const std::vector<int>& chosen) {
+    const std::optional<ViewMesh> mesh = ViewMesh::tryDelaunay(positions, chosen, &region);
+    return mesh && mesh->vertices() == sorted(chosen);
+  };
+  // Three nodes of a triangle in the south corridor, and b beside a.
+  const int a = at({2.125, 0.375}), b = at({2.375, 0.375}), c = at({2.125, 0.875}), d = at({4.125, 0.625});
+  REQUIRE((a >= 0 && b >= 0 && c >= 0 && d >= 0));
+  // Over the count: the later of the crowded pair leaves.
+  CHECK(regionUniformSelection({a, b, c, d}, walking, positions, region, 3) == sorted({a, c, d}));
+  // A lone node in the north corridor, among five in the south: a triangle
+  // to the south would cross the wall, so the two samples nearest it by
+  // walking join (ties: the lower index), the triangle they make with it
+  // keeps it, and two crowded southern nodes leave for them (the later of
+  // each pair 0.5 m apart).
+  const int e = at({6.125, 0.375}), f = at({6.125, 0.875});
+  const int lone = at({0.125, 1.625});
+  const int below = at({0.125, 1.375}), beside = at({0.375, 1.625});
+  REQUIRE((e >= 0 && f >= 0 && lone >= 0 && below >= 0 && beside >= 0));
+  CHECK(!allServe({a, c, d, e, f, lone}));
+  const std::vector<int> served = regionUniformSelection({a, c, d, e, f, lone}, walking, positions, region, 6);
+  CHECK(served == sorted({a, d, e, lone, below, beside}));
+  CHECK(allServe(served));
+  // Grown from the south triangle to 6: the farthest samples by walking
+  // lie in the north corridor, which gets a triangle too.
+  const std::vector<int> grown = regionUniformSelection({a, c, d}, walking, positions, region, 6);
+  REQUIRE(grown.size() == 6);
+  CHECK(allServe(grown));
+  CHECK(std::count_if(grown.begin(), grown.end(), [&](int s) { return inNorthCorridor(positions[size_t(s)]); }) >= 3);
+  // The count asked for, every one serving, whatever the lattice gives
+  // (the straight lattice's nodes on the wall's line serve nothing).
+  for (const int count : {3, 5, 8, 12, 20, 40}) {
+    const std::vector<int> lattice = latticeSelection(positions, count);
+    const std::vector<int> chosen = regionUniformSelection(lattice, walking, positions, region, count);
+    CHECK(chosen.size() == size_t(count));
+    CHECK(allServe(chosen));
   }
-  CHECK(south == 1);
-  CHECK(north == 1);
-  // Three nodes, two of them side by side: the later of the pair leaves.
-  const int a = at({2.125, 0.375}), b = at({2.375, 0.375}), far = at({2.125, 1.875});
-  REQUIRE((a >= 0 && b >= 0 && far >= 0));
-  const std::vector<int> trimmed = regionUniformSelection({a, b, far}, walking, 2);
-  CHECK(trimmed == std::vector<int>{std::min(a, b), far});
-  // The count asked for, whatever the lattice gives.
-  for (const int count : {1, 5, 17}) CHECK(regionUniformSelection({a, b, far}, walking, count).size() == size_t(count));
 }

@@ -7,16 +7,17 @@
 #include "core/image/image_annotation.h"
 #include "core/io/json_fields.h"
 #include "core/io/png_io.h"
-#include "core/selection/baselines.h"
+#include "core/selection/baseline_set.h"
 #include "core/selection/evaluation.h"
+#include "core/selection/reference_selection.h"
 #include "core/selection/selection.h"
 #include "core/selection/tiled_evaluation.h"
 #include "core/selection/tiled_selection.h"
-#include "core/selection/walking_distances.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <memory>
@@ -25,18 +26,6 @@
 namespace triwalk {
 
 namespace {
-
-const char* label(const std::string& method) {
-  if (method == "initial") return "initial (a)";
-  if (method == "uniform") return "uniform (b)";
-  if (method == "uniform_region") return "uniform, region-aware";
-  if (method == "edge_collapse") return "edge collapse (c)";
-  if (method == "kmedoids") return "k-medoids";
-  if (method == "geodesic_kmedoids") return "k-medoids, walking";
-  if (method == "farthest_point") return "farthest point, walking";
-  if (method == "random") return "random";
-  return method.c_str();
-}
 
 void writeHeatmaps(const std::filesystem::path& directory, const MethodEvaluation& evaluation, const ViewMesh& mesh,
                    DatasetTriangleErrors& errors) {
@@ -70,8 +59,8 @@ void checkCounts(const Dataset& dataset, const Selection& selection, const std::
 // Probe error of edge collapse and the baselines at several sample counts
 // (checked by checkCounts): the collapse log replayed to each count gives
 // edge collapse's mesh (with the refinement at the final count).
-void compareAtCounts(const Dataset& dataset, const Selection& selection, const std::vector<int>& counts, unsigned seed,
-                     DatasetTriangleErrors& errors) {
+void compareAtCounts(const Dataset& dataset, const Selection& selection, const std::vector<int>& counts,
+                     const BaselineSet& baselines, DatasetTriangleErrors& errors) {
   const std::vector<glm::dvec2> positions = samplePositions(dataset);
   const int initialCount = ViewMesh(positions, selection.initialTriangles).vertexCount();
   std::printf("\nprobe mean error by sample count (edge collapse replayed from its log)\n\n");
@@ -84,9 +73,8 @@ void compareAtCounts(const Dataset& dataset, const Selection& selection, const s
     const size_t steps = *lastStepWithSamples(initialCount, selection.collapses, count);
     const std::function<ViewMesh()> meshes[4] = {
         [&] { return datasetTriangles(dataset, replayForward(selection.initialTriangles, selection.collapses, steps)); },
-        [&] { return datasetMesh(dataset, uniformSelection(dataset, count), "uniform baseline"); },
-        [&] { return datasetMesh(dataset, kMedoidsSelection(positions, count), "k-medoids baseline"); },
-        [&] { return datasetMesh(dataset, randomSelection(dataset.sampleCount(), count, seed), "random baseline"); }};
+        [&] { return baselines.mesh("uniform", count); }, [&] { return baselines.mesh("kmedoids", count); },
+        [&] { return baselines.mesh("random", count); }};
     std::string cells[4];
     for (int m = 0; m < 4; ++m) {
       std::optional<ViewMesh> mesh;
@@ -115,6 +103,42 @@ void compareAtCounts(const Dataset& dataset, const Selection& selection, const s
     means[m] = complete[m] ? cell : "-";
   }
   std::printf("| mean | %s | %s | %s | %s |\n", means[0].c_str(), means[1].c_str(), means[2].c_str(), means[3].c_str());
+}
+
+// The paper's "fewer views for the same quality": how many views each
+// geometric baseline needs to reach edge collapse's probe mean, along
+// counts from the selection's up to 4 times it, each evaluated only while
+// the baseline is still above it. Greedy insertion is left out: each of its
+// counts is a selection of its own (the suite interpolates it along its
+// rows).
+std::vector<std::pair<std::string, ViewsForError>> viewsForEdgeCollapseError(
+    const BaselineSet& baselines, const std::vector<MethodEvaluation>& evaluations, int sampleCount, double target,
+    const DatasetTriangleErrors& errors) {
+  constexpr double kLadder[] = {1.25, 1.5, 2.0, 3.0, 4.0};
+  const std::vector<std::string>& geometric = geometricBaselines();
+  std::vector<std::pair<std::string, ViewsForError>> views;
+  for (const MethodEvaluation& evaluation : evaluations) {
+    if (std::find(geometric.begin(), geometric.end(), evaluation.method) == geometric.end()) continue;
+    std::vector<std::pair<int, double>> curve = {{evaluation.samples, evaluation.probeMeanError}};
+    for (double factor : kLadder) {
+      throwIfInterrupted();
+      if (curve.back().second <= target) break;
+      const int count = std::min(sampleCount, int(std::ceil(factor * double(evaluation.samples))));
+      std::optional<ViewMesh> mesh;
+      try {
+        mesh = baselines.mesh(evaluation.method, count);
+      } catch (const InputError&) {
+        break;
+      }
+      if (mesh->vertexCount() <= curve.back().first) continue;
+      const std::vector<double> probe = probeErrors(*mesh, errors);
+      double mean = 0.0, deviation = 0.0;
+      meanAndDeviation(probe, mean, deviation);
+      curve.emplace_back(mesh->vertexCount(), mean);
+    }
+    views.emplace_back(evaluation.method, viewsForError(curve, target));
+  }
+  return views;
 }
 
 }  // namespace
@@ -162,6 +186,7 @@ void registerEvalCommand(CLI::App& app) {
 
     const std::vector<glm::dvec2> positions = samplePositions(dataset);
     const int count = int(selection.samples.size());
+    const BaselineSet baselines(dataset, a.seed);
     struct Row {
       std::string method;
       ViewMesh mesh;
@@ -170,22 +195,35 @@ void registerEvalCommand(CLI::App& app) {
     // A baseline that cannot be triangulated at this count (its samples
     // collinear, say) is named with the reason; the rest are evaluated.
     std::vector<std::pair<std::string, std::string>> notBuilt;
-    auto addBaseline = [&](const std::string& method, const std::function<std::vector<int>()>& select) {
+    auto addBaseline = [&](const std::string& method) {
       try {
-        rows.push_back({method, datasetMesh(dataset, select(), std::string(label(method)) + " baseline")});
+        rows.push_back({method, baselines.mesh(method, count)});
       } catch (const InputError& error) {
         notBuilt.emplace_back(method, error.problem());
       }
     };
     rows.push_back({"initial", datasetMesh(dataset, {}, a.dataset)});
-    addBaseline("uniform", [&] { return uniformSelection(dataset, count); });
+    addBaseline("uniform");
     rows.push_back({"edge_collapse", selectionMesh(selection, dataset)});
-    addBaseline("kmedoids", [&] { return kMedoidsSelection(positions, count); });
-    const WalkingDistances walking(positions, dataset.walkableRegion());
-    addBaseline("uniform_region", [&] { return regionUniformSelection(uniformSelection(dataset, count), walking, count); });
-    addBaseline("geodesic_kmedoids", [&] { return geodesicKMedoidsSelection(walking, count); });
-    addBaseline("farthest_point", [&] { return farthestPointSelection(walking, count); });
-    addBaseline("random", [&] { return randomSelection(dataset.sampleCount(), count, a.seed); });
+    for (const std::string& method : geometricBaselines()) {
+      if (method != "uniform") addBaseline(method);
+    }
+    // Greedy insertion, alone and refined, with the errors the selection
+    // was made with; it prices every free sample at every step, so not on
+    // a capture judged by tiles.
+    if (byTiles) {
+      notBuilt.emplace_back("greedy_insertion", "not run above " + std::to_string(kTileSamples) +
+                                                    " samples (it prices every free sample at every step)");
+    } else if (!selection.errors) {
+      notBuilt.emplace_back("greedy_insertion", "the selection file does not say which errors it was made with");
+    } else {
+      DatasetTriangleErrors selectionErrors(dataset, *selection.errors, LoadedViews::Samples, a.quiet);
+      const InsertionRun run =
+          insertReferences(dataset, selectionErrors, RefinementOptions{}, insertionStartCount(count), count, a.quiet);
+      rows.push_back({"greedy_insertion", datasetMesh(dataset, run.referencesAt(count), "greedy insertion")});
+      rows.push_back({"insertion_refined", datasetTriangles(dataset, refinedReferences(dataset, selectionErrors, RefinementOptions{},
+                                                                                        run.referencesAt(count), a.quiet))});
+    }
 
     if (!a.baselinesOut.empty()) {
       std::filesystem::create_directories(a.baselinesOut);
@@ -227,12 +265,12 @@ void registerEvalCommand(CLI::App& app) {
     std::printf("|---|---|---|---|---|---|---|---|\n");
     for (size_t row = 0; row < evaluations.size(); ++row) {
       const MethodEvaluation& e = evaluations[row];
-      std::printf("| %s | %d | %d | %.4f | %.4f | %.4f | %.4f | %d (%.2f m) |\n", label(e.method), e.samples,
+      std::printf("| %s | %d | %d | %.4f | %.4f | %.4f | %.4f | %d (%.2f m) |\n", methodLabel(e.method), e.samples,
                   e.triangles, e.meanError, e.stdError, e.probeMeanError, e.probeStdError, outside[row].count,
                   outside[row].farthest);
     }
     for (const auto& [method, reason] : notBuilt) {
-      std::printf("| %s | not built at %d samples: %s |\n", label(method), count, reason.c_str());
+      std::printf("| %s | not built at %d samples: %s |\n", methodLabel(method), count, reason.c_str());
     }
     std::printf("\nprobe mean error of edge collapse (%.4f) against the baselines: the change, +- one standard error of\n"
                 "the probe-by-probe differences, and the probes where edge collapse is lower:\n",
@@ -240,13 +278,24 @@ void registerEvalCommand(CLI::App& app) {
     for (const MethodEvaluation& baseline : evaluations) {
       if (baseline.method == "initial" || baseline.method == "edge_collapse") continue;
       const PairedComparison paired = compareProbeErrors(collapse->probeErrors, baseline.probeErrors);
-      std::printf("  %-24s %.4f  edge collapse %+.1f%% +- %.1f%%, lower at %d of %zu probes\n", label(baseline.method),
+      std::printf("  %-24s %.4f  edge collapse %+.1f%% +- %.1f%%, lower at %d of %zu probes\n", methodLabel(baseline.method),
                   baseline.probeMeanError, 100.0 * paired.meanDifference / baseline.probeMeanError,
                   100.0 * paired.standardError / baseline.probeMeanError, paired.candidateLower,
                   collapse->probeErrors.size());
     }
 
-    if (!a.counts.empty()) compareAtCounts(dataset, selection, a.counts, a.seed, *errors);
+    std::vector<std::pair<std::string, ViewsForError>> views;
+    if (!byTiles) {
+      views = viewsForEdgeCollapseError(baselines, evaluations, dataset.sampleCount(), collapse->probeMeanError, *errors);
+      std::printf("\nviews each baseline needs for edge collapse's probe mean (%.4f with %d views), interpolated\n"
+                  "along its counts up to 4 times as many:\n",
+                  collapse->probeMeanError, collapse->samples);
+      for (const auto& [method, needed] : views) {
+        std::printf("  %-24s %s\n", methodLabel(method), formatViews(needed).c_str());
+      }
+    }
+
+    if (!a.counts.empty()) compareAtCounts(dataset, selection, a.counts, baselines, *errors);
 
     if (!a.json.empty()) {
       nlohmann::json document = {{"dataset", a.dataset},
@@ -254,6 +303,9 @@ void registerEvalCommand(CLI::App& app) {
                                  {"rows", nlohmann::json::array()},
                                  {"not_built", nlohmann::json::object()}};
       for (const auto& [method, reason] : notBuilt) document["not_built"][method] = reason;
+      for (const auto& [method, needed] : views) {
+        document["views_for_edge_collapse_error"][method] = formatViews(needed);
+      }
       for (size_t row = 0; row < evaluations.size(); ++row) {
         const MethodEvaluation& e = evaluations[row];
         document["rows"].push_back({{"method", e.method},

@@ -89,9 +89,6 @@ FrameScores summarizeScores(std::vector<double> psnrs, std::vector<double> ssims
 // first frame marks it.
 constexpr const char* kRenderOutputMarker = "frame_0000.png";
 
-// Enough for a walk of an hour at 30 frames a second.
-constexpr int kMaxFrames = 108000;
-
 }  // namespace
 
 void registerRenderCommand(CLI::App& app) {
@@ -126,7 +123,7 @@ void registerRenderCommand(CLI::App& app) {
   command->add_option("--fov", arguments->fov, "Vertical field of view, degrees")
       ->capture_default_str()->check(CLI::Range(10.0f, 150.0f));
   command->add_option("--frames", arguments->frames, "Frames of a preset path (default: 36 rotate, 24 translate)")
-      ->check(CLI::Range(1, kMaxFrames));
+      ->check(CLI::Range(1, int(kMaxPathFrames)));
   command->add_option("--at", arguments->at, "rotate: position x,y[,z] (default: the middle of the samples)")
       ->delimiter(',')->expected(2, 3)->check(coordinate());
   command->add_option("--from", arguments->from, "translate: start x,y[,z]")->delimiter(',')->expected(2, 3)->check(coordinate());
@@ -188,9 +185,9 @@ void registerRenderCommand(CLI::App& app) {
       poses = translatePath(from, to, a.frames > 0 ? a.frames : 24, a.yaw.empty() ? sideways : a.yaw[0], a.pitch);
     } else {
       const CameraPath path = readCameraPath(a.path);
-      if (frameCount(path, a.fps) > size_t(kMaxFrames)) {
+      if (frameCount(path, a.fps) > kMaxPathFrames) {
         throw InputError(a.path, "lasts " + std::to_string(int(pathDuration(path, a.fps))) + " s: more than " +
-                                     std::to_string(kMaxFrames) + " frames at --fps " + std::to_string(a.fps));
+                                     std::to_string(kMaxPathFrames) + " frames at --fps " + std::to_string(a.fps));
       }
       poses = framePoses(path, a.fps);
     }

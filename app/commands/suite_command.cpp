@@ -22,9 +22,9 @@
 #include "app/setup/scene_capture.h"
 #include "core/io/atomic_file.h"
 #include "core/io/json_fields.h"
-#include "core/selection/baselines.h"
-#include "core/selection/walking_distances.h"
+#include "core/selection/baseline_set.h"
 #include "core/selection/evaluation.h"
+#include "core/selection/reference_selection.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 
@@ -32,6 +32,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -108,17 +109,28 @@ Comparison compare(const std::vector<double>& candidate, const std::vector<doubl
   return {paired.meanDifference / baselineMean, paired.standardError / baselineMean};
 }
 
+// The methods edge collapse is compared with, in the tables' order: the
+// geometric baselines, then greedy insertion alone and refined.
+std::vector<std::string> comparedMethods() {
+  std::vector<std::string> methods = geometricBaselines();
+  methods.push_back("greedy_insertion");
+  methods.push_back("insertion_refined");
+  return methods;
+}
+
 struct SuiteRow {
   std::string scene;
   double fraction = 0.0;
   int count = 0;         // the target
   int reachedCount = 0;  // edge collapse's references, which every other method gets too
   int uniformCount = 0;
-  double dense = 0.0, uniform = 0.0, kmedoids = 0.0, random = 0.0, edgeCollapse = 0.0;
-  // By walking distance (walking_distances.h); NaN where it could not be
-  // triangulated at the count.
-  double walkingKMedoids = 0.0, farthestPoint = 0.0, regionUniform = 0.0;
-  Comparison versusUniform, versusKMedoids, versusWalkingKMedoids, versusFarthestPoint, versusRegionUniform;
+  double dense = 0.0, edgeCollapse = 0.0;
+  // Per compared method: its probe mean (NaN where it could not be
+  // triangulated at the count), edge collapse against it, and the views
+  // it needs for edge collapse's probe mean along the scene's rows.
+  std::map<std::string, double> means;
+  std::map<std::string, Comparison> versus;
+  std::map<std::string, ViewsForError> views;
   double gapClosed = 0.0;  // (uniform - edge collapse) / (uniform - dense)
   double selectionSeconds = 0.0;
 };
@@ -135,47 +147,81 @@ std::string formatMean(double value) {
   return std::isnan(value) ? "-" : text;
 }
 
-std::string formatVersus(double baseline, const Comparison& comparison) {
-  return std::isnan(baseline) ? "-" : formatPercent(comparison);
+std::string samplesCell(const SuiteRow& r) {
+  return r.reachedCount == r.count ? std::to_string(r.count)
+                                   : std::to_string(r.reachedCount) + " (target " + std::to_string(r.count) + ")";
 }
 
+std::string headerOf(const std::string& first, const std::vector<std::string>& methods, const std::string& prefix,
+                     const std::string& last = "") {
+  std::string header = "| " + first, rule = "|---";
+  for (const std::string& method : methods) header += " | " + prefix + methodLabel(method), rule += "|---";
+  if (!last.empty()) header += " | " + last, rule += "|---";
+  return header + " |\n" + rule + "|\n";
+}
+
+// Three tables, a row per scene and count: the probe means; edge collapse
+// against each method, paired; the views each method needs for edge
+// collapse's probe mean. Then the means over scenes.
 std::string tableOf(const std::vector<SuiteRow>& rows, const std::vector<double>& fractions) {
+  const std::vector<std::string> methods = comparedMethods();
   std::ostringstream out;
-  char line[768];
-  out << "| scene | samples | dense | uniform | uniform, region-aware | k-medoids | k-medoids, walking | farthest point, "
-         "walking | random | edge collapse | vs uniform | vs uniform, region-aware | vs k-medoids | vs k-medoids, walking | "
-         "vs farthest point, walking | gap closed |\n"
-         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  out << "Probe mean error (uniform: its own count in brackets):\n\n"
+      << headerOf("scene | samples | dense | edge collapse", methods, "", "gap closed");
   for (const SuiteRow& r : rows) {
-    const std::string samples = r.reachedCount == r.count
-                                    ? std::to_string(r.count)
-                                    : std::to_string(r.reachedCount) + " (target " + std::to_string(r.count) + ")";
-    std::snprintf(line, sizeof line,
-                  "| %s | %s | %.4f | %.4f (%d) | %s | %.4f | %s | %s | %.4f | %.4f | %s | %s | %s | %s | %s | %.0f%% |\n",
-                  r.scene.c_str(), samples.c_str(), r.dense, r.uniform, r.uniformCount, formatMean(r.regionUniform).c_str(),
-                  r.kmedoids, formatMean(r.walkingKMedoids).c_str(), formatMean(r.farthestPoint).c_str(), r.random,
-                  r.edgeCollapse, formatPercent(r.versusUniform).c_str(),
-                  formatVersus(r.regionUniform, r.versusRegionUniform).c_str(), formatPercent(r.versusKMedoids).c_str(),
-                  formatVersus(r.walkingKMedoids, r.versusWalkingKMedoids).c_str(),
-                  formatVersus(r.farthestPoint, r.versusFarthestPoint).c_str(), 100.0 * r.gapClosed);
-    out << line;
-  }
-  out << "\nMeans over scenes (the relative differences and the gap closed averaged; wins = rows where edge collapse "
-         "has the lower probe mean):\n\n"
-         "| fraction | vs uniform | vs k-medoids | gap closed | beats uniform | beats k-medoids |\n|---|---|---|---|---|---|\n";
-  auto summary = [&](const std::string& label, const std::vector<const SuiteRow*>& selected) {
-    double u = 0.0, k = 0.0, g = 0.0;
-    int winsU = 0, winsK = 0;
-    for (const SuiteRow* r : selected) {
-      u += r->versusUniform.relative / double(selected.size());
-      k += r->versusKMedoids.relative / double(selected.size());
-      g += r->gapClosed / double(selected.size());
-      winsU += r->edgeCollapse < r->uniform;
-      winsK += r->edgeCollapse < r->kmedoids;
+    out << "| " << r.scene << " | " << samplesCell(r) << " | " << formatMean(r.dense) << " | " << formatMean(r.edgeCollapse);
+    for (const std::string& method : methods) {
+      out << " | " << formatMean(r.means.at(method));
+      if (method == "uniform") out << " (" << r.uniformCount << ")";
     }
-    std::snprintf(line, sizeof line, "| %s | %+.1f%% | %+.1f%% | %.0f%% | %d of %zu | %d of %zu |\n", label.c_str(), 100.0 * u,
-                  100.0 * k, 100.0 * g, winsU, selected.size(), winsK, selected.size());
-    out << line;
+    char gap[16];
+    std::snprintf(gap, sizeof gap, "%.0f%%", 100.0 * r.gapClosed);
+    out << " | " << gap << " |\n";
+  }
+  out << "\nEdge collapse against each method, probe by probe (negative: edge collapse lower; +- one standard "
+         "error of the paired differences):\n\n"
+      << headerOf("scene | samples", methods, "vs ");
+  for (const SuiteRow& r : rows) {
+    out << "| " << r.scene << " | " << samplesCell(r);
+    for (const std::string& method : methods) {
+      out << " | " << (std::isnan(r.means.at(method)) ? "-" : formatPercent(r.versus.at(method)));
+    }
+    out << " |\n";
+  }
+  out << "\nViews each method needs for edge collapse's probe mean at the row's count, interpolated along the "
+         "scene's rows (<= : already at the row's count or below; > : not at the scene's largest count):\n\n"
+      << headerOf("scene | edge collapse", methods, "");
+  for (const SuiteRow& r : rows) {
+    out << "| " << r.scene << " | " << r.reachedCount;
+    for (const std::string& method : methods) {
+      out << " | " << (r.views.count(method) ? formatViews(r.views.at(method)) : "-");
+    }
+    out << " |\n";
+  }
+  out << "\nMeans over scenes of edge collapse against each method, and the rows where edge collapse has the "
+         "lower probe mean:\n\n"
+      << headerOf("fraction", methods, "vs ", "gap closed");
+  auto summary = [&](const std::string& label, const std::vector<const SuiteRow*>& selected) {
+    out << "| " << label;
+    for (const std::string& method : methods) {
+      double relative = 0.0;
+      int wins = 0, rowsBuilt = 0;
+      for (const SuiteRow* r : selected) {
+        if (std::isnan(r->means.at(method))) continue;
+        relative += r->versus.at(method).relative;
+        wins += r->edgeCollapse < r->means.at(method);
+        ++rowsBuilt;
+      }
+      char cell[64];
+      std::snprintf(cell, sizeof cell, "%+.1f%% (%d of %d)", rowsBuilt ? 100.0 * relative / rowsBuilt : 0.0, wins,
+                    rowsBuilt);
+      out << " | " << cell;
+    }
+    double gap = 0.0;
+    for (const SuiteRow* r : selected) gap += r->gapClosed / double(selected.size());
+    char cell[16];
+    std::snprintf(cell, sizeof cell, "%.0f%%", 100.0 * gap);
+    out << " | " << cell << " |\n";
   };
   std::vector<const SuiteRow*> all;
   for (double fraction : fractions) {
@@ -190,6 +236,21 @@ std::string tableOf(const std::vector<SuiteRow>& rows, const std::vector<double>
   for (const SuiteRow& r : rows) all.push_back(&r);
   if (!all.empty()) summary("all", all);
   return out.str();
+}
+
+// Each row's views for edge collapse's probe mean, along the scene's rows
+// of each method (its probe mean at each row's count).
+void addViewsForEqualError(std::vector<SuiteRow>& rows, size_t firstOfScene) {
+  for (const std::string& method : comparedMethods()) {
+    std::vector<std::pair<int, double>> curve;
+    for (size_t i = firstOfScene; i < rows.size(); ++i) {
+      const double value = rows[i].means.at(method);
+      const int count = method == "uniform" ? rows[i].uniformCount : rows[i].reachedCount;
+      if (!std::isnan(value) && (curve.empty() || count > curve.back().first)) curve.emplace_back(count, value);
+    }
+    if (curve.empty()) continue;
+    for (size_t i = firstOfScene; i < rows.size(); ++i) rows[i].views[method] = viewsForError(curve, rows[i].edgeCollapse);
+  }
 }
 
 }  // namespace
@@ -296,8 +357,9 @@ void registerSuiteCommand(CLI::App& app) {
       std::vector<int> counts;
       std::vector<Selection> selections;
       std::vector<double> selectionSeconds;
+      std::vector<std::pair<Selection, Selection>> inserted;  // greedy insertion, alone and refined, per count
       {
-        std::optional<DatasetTriangleErrors> selectionErrors;  // loaded when a count needs decimating
+        std::optional<DatasetTriangleErrors> selectionErrors;  // loaded when a count needs selecting
         for (double fraction : spec.fractions) {
           throwIfInterrupted();
           const int count = std::max(4, int(std::lround(fraction * dataset.sampleCount())));
@@ -318,12 +380,54 @@ void registerSuiteCommand(CLI::App& app) {
           selections.push_back(std::move(run.selection));
           selectionSeconds.back() = run.collapseSeconds + run.refinementSeconds;
         }
+        // Greedy insertion at each row's count (edge collapse's), alone
+        // and refined, by the same errors and refinement settings; saved
+        // beside edge collapse's selections.
+        for (size_t f = 0; f < counts.size(); ++f) {
+          throwIfInterrupted();
+          const int reached = int(selections[f].samples.size());
+          const SelectionSettings selectionOptions = selectionSettings(a.selection, 0.0, counts[f]);
+          auto fileOf = [&](const std::string& method) {
+            return directory / (method + "_" + std::to_string(counts[f]) + ".json");
+          };
+          if (a.reuseSelections && std::filesystem::exists(fileOf("greedy_insertion")) &&
+              std::filesystem::exists(fileOf("insertion_refined"))) {
+            std::pair<Selection, Selection> earlier = {readSelection(fileOf("greedy_insertion"), dataset),
+                                                       readSelection(fileOf("insertion_refined"), dataset)};
+            if (int(earlier.first.samples.size()) == reached && int(earlier.second.samples.size()) == reached) {
+              inserted.push_back(std::move(earlier));
+              continue;
+            }
+          }
+          std::printf("== %s: greedy insertion of %d of %d samples\n", scene.name.c_str(), reached,
+                      dataset.sampleCount());
+          std::fflush(stdout);
+          if (!selectionErrors) selectionErrors.emplace(dataset, selectionErrorSettings, LoadedViews::Samples, a.quiet);
+          const InsertionRun run = insertReferences(dataset, *selectionErrors, selectionOptions.refinement,
+                                                    insertionStartCount(reached), reached, a.quiet);
+          auto saved = [&](const std::string& method, const ViewMesh& mesh) {
+            Selection selection;
+            selection.method = method;
+            selection.samples = mesh.vertices();
+            selection.triangles = mesh.triangles();
+            selection.settings = describeSelectionSettings(selectionOptions, selectionErrorSettings);
+            writeSelection(fileOf(method), selection, dataset);
+            return selection;
+          };
+          const std::vector<int> references = run.referencesAt(reached);
+          const Selection greedy = saved("greedy_insertion", datasetMesh(dataset, references, "greedy insertion"));
+          const Selection refined = saved(
+              "insertion_refined", datasetTriangles(dataset, refinedReferences(dataset, *selectionErrors,
+                                                                               selectionOptions.refinement, references, a.quiet)));
+          inserted.push_back({greedy, refined});
+        }
       }
 
       DatasetTriangleErrors errors(dataset, settings, LoadedViews::SamplesAndProbes, a.quiet);
-      const std::vector<glm::dvec2> positions = samplePositions(dataset);
-      const WalkingDistances walking(positions, dataset.walkableRegion());
+      const BaselineSet baselines(dataset, 1);
       const std::vector<double> dense = probeErrors(datasetMesh(dataset, {}, dataset.manifestPath().string()), errors);
+      const size_t firstOfScene = rows.size();
+      std::vector<nlohmann::json> sceneResults;
       for (size_t f = 0; f < spec.fractions.size(); ++f) {
         throwIfInterrupted();
         const double fraction = spec.fractions[f];
@@ -337,69 +441,57 @@ void registerSuiteCommand(CLI::App& app) {
         // The decimation can stop off its target: above it when no valid
         // collapse is left (a level whose parts and corridors each need
         // their own triangles), below it when a collapse also drops a
-        // boundary sample. The baselines get as many references as edge
-        // collapse kept, so every row compares equal counts.
+        // boundary sample. The other methods get as many references as
+        // edge collapse kept, so every row compares equal counts.
         const int reached = int(selection.samples.size());
         row.reachedCount = reached;
-        const ViewMesh uniform = datasetMesh(dataset, uniformSelection(dataset, reached), "uniform baseline");
-        row.uniformCount = uniform.vertexCount();
         const std::vector<double> edgeCollapse = probeErrors(selectionMesh(selection, dataset), errors);
-        const std::vector<double> uniformErrors = probeErrors(uniform, errors);
-        const std::vector<double> kmedoids =
-            probeErrors(datasetMesh(dataset, kMedoidsSelection(positions, reached), "k-medoids baseline"), errors);
-        const std::vector<double> random = probeErrors(
-            datasetMesh(dataset, randomSelection(dataset.sampleCount(), reached, 1), "random baseline"), errors);
-        // The walking baselines are named "-" where they cannot be triangulated, as eval does.
-        auto walkingBaseline = [&](const std::function<std::vector<int>()>& select) {
-          try {
-            return probeErrors(datasetMesh(dataset, select(), "walking baseline"), errors);
-          } catch (const InputError&) {
-            return std::vector<double>();
+        nlohmann::json probeErrorsJson = {{"dense", dense}, {"edge_collapse", edgeCollapse}};
+        for (const std::string& method : comparedMethods()) {
+          // A baseline that cannot be triangulated at the count is named "-", as eval does.
+          std::vector<double> values;
+          if (method == "greedy_insertion" || method == "insertion_refined") {
+            const Selection& insertion = method == "greedy_insertion" ? inserted[f].first : inserted[f].second;
+            values = probeErrors(selectionMesh(insertion, dataset), errors);
+          } else {
+            try {
+              const ViewMesh mesh = baselines.mesh(method, reached);
+              if (method == "uniform") row.uniformCount = mesh.vertexCount();
+              values = probeErrors(mesh, errors);
+            } catch (const InputError&) {
+            }
           }
-        };
-        const std::vector<double> walkingKMedoids =
-            walkingBaseline([&] { return geodesicKMedoidsSelection(walking, reached); });
-        const std::vector<double> farthestPoint = walkingBaseline([&] { return farthestPointSelection(walking, reached); });
-        const std::vector<double> regionUniform = walkingBaseline(
-            [&] { return regionUniformSelection(uniformSelection(dataset, reached), walking, reached); });
-        row.regionUniform = regionUniform.empty() ? std::nan("") : mean(regionUniform);
-        if (!regionUniform.empty()) row.versusRegionUniform = compare(edgeCollapse, regionUniform);
-        row.walkingKMedoids = walkingKMedoids.empty() ? std::nan("") : mean(walkingKMedoids);
-        row.farthestPoint = farthestPoint.empty() ? std::nan("") : mean(farthestPoint);
-        if (!walkingKMedoids.empty()) row.versusWalkingKMedoids = compare(edgeCollapse, walkingKMedoids);
-        if (!farthestPoint.empty()) row.versusFarthestPoint = compare(edgeCollapse, farthestPoint);
+          row.means[method] = values.empty() ? std::nan("") : mean(values);
+          if (!values.empty()) row.versus[method] = compare(edgeCollapse, values);
+          probeErrorsJson[method] = values;
+        }
         row.dense = mean(dense);
-        row.uniform = mean(uniformErrors);
-        row.kmedoids = mean(kmedoids);
-        row.random = mean(random);
         row.edgeCollapse = mean(edgeCollapse);
-        row.versusUniform = compare(edgeCollapse, uniformErrors);
-        row.versusKMedoids = compare(edgeCollapse, kmedoids);
-        row.gapClosed = (row.uniform - row.edgeCollapse) / (row.uniform - row.dense);
-        std::printf("   edge collapse %.4f, uniform %.4f (%d), k-medoids %.4f: %s against uniform, %s against k-medoids, "
-                    "%.0f%% of the gap closed\n",
-                    row.edgeCollapse, row.uniform, row.uniformCount, row.kmedoids, formatPercent(row.versusUniform).c_str(),
-                    formatPercent(row.versusKMedoids).c_str(), 100.0 * row.gapClosed);
+        row.gapClosed = (row.means.at("uniform") - row.edgeCollapse) / (row.means.at("uniform") - row.dense);
+        std::printf("   edge collapse %.4f, uniform %.4f (%d), greedy insertion refined %s: %s against uniform, %s "
+                    "against greedy insertion refined, %.0f%% of the gap closed\n",
+                    row.edgeCollapse, row.means.at("uniform"), row.uniformCount,
+                    formatMean(row.means.at("insertion_refined")).c_str(), formatPercent(row.versus["uniform"]).c_str(),
+                    formatPercent(row.versus["insertion_refined"]).c_str(), 100.0 * row.gapClosed);
         std::fflush(stdout);
-        results.push_back({{"scene", scene.name},
-                           {"settings", selection.settings},
-                           {"fraction", fraction},
-                           {"samples", count},
-                           {"edge_collapse_samples", reached},
-                           {"uniform_samples", row.uniformCount},
-                           {"selection", "selection_" + std::to_string(count) + ".json"},
-                           {"selection_seconds", row.selectionSeconds},
-                           {"probe_errors",
-                            {{"dense", dense},
-                             {"uniform", uniformErrors},
-                             {"edge_collapse", edgeCollapse},
-                             {"kmedoids", kmedoids},
-                             {"geodesic_kmedoids", walkingKMedoids},
-                             {"farthest_point", farthestPoint},
-                             {"uniform_region", regionUniform},
-                             {"random", random}}}});
+        sceneResults.push_back({{"scene", scene.name},
+                                {"settings", selection.settings},
+                                {"fraction", fraction},
+                                {"samples", count},
+                                {"edge_collapse_samples", reached},
+                                {"uniform_samples", row.uniformCount},
+                                {"selection", "selection_" + std::to_string(count) + ".json"},
+                                {"selection_seconds", row.selectionSeconds},
+                                {"probe_errors", probeErrorsJson}});
         rows.push_back(row);
         progress.advance();
+      }
+      addViewsForEqualError(rows, firstOfScene);
+      for (size_t i = 0; i < sceneResults.size(); ++i) {
+        for (const auto& [method, views] : rows[firstOfScene + i].views) {
+          sceneResults[i]["views_for_edge_collapse_error"][method] = formatViews(views);
+        }
+        results.push_back(std::move(sceneResults[i]));
       }
     }
     progress.finish();

@@ -8,12 +8,9 @@ namespace triwalk {
 
 namespace {
 
-// An hour at 30 frames a second, as render's limit.
-constexpr size_t kMaxExportFrames = 108000;
-
 std::vector<CameraPose> checkedFramePoses(const CameraPath& path, const std::filesystem::path& file, int framesPerSecond) {
-  if (frameCount(path, framesPerSecond) > kMaxExportFrames) {
-    throw InputError(file.string(), "the walk lasts more than " + std::to_string(kMaxExportFrames) + " frames");
+  if (frameCount(path, framesPerSecond) > kMaxPathFrames) {
+    throw InputError(file.string(), "the walk lasts more than " + std::to_string(kMaxPathFrames) + " frames");
   }
   return framePoses(path, framesPerSecond);
 }

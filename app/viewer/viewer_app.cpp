@@ -162,7 +162,7 @@ public:
     });
     glfwSetCharCallback(context_.window(), [](GLFWwindow* window, unsigned int codepoint) {
       Viewer& viewer = *static_cast<Viewer*>(glfwGetWindowUserPointer(window));
-      if (codepoint == '?' && !ImGui::GetIO().WantTextInput && !viewer.options_.hideUi) viewer.state_.help = !viewer.state_.help;
+      if (codepoint == '?' && !ImGui::GetIO().WantTextInput) viewer.toggleHelp();
     });
     panoramaOverlay_ = std::make_unique<PanoramaOverlay>();
     ImGui_ImplGlfw_InitForOpenGL(context_.window(), true);
@@ -248,9 +248,13 @@ private:
     if (key == GLFW_KEY_N || key == GLFW_KEY_B) teleportToReference(key == GLFW_KEY_B);
     if (key == GLFW_KEY_T) toggleOverlay(ViewOverlay::Trust);
     if (key == GLFW_KEY_E) toggleOverlay(ViewOverlay::Error);
-    if (options_.hideUi) return;
-    if (key == GLFW_KEY_TAB) toggleSidebar();
-    if (key == GLFW_KEY_F1) state_.help = !state_.help;
+    if (key == GLFW_KEY_F1) toggleHelp();
+    if (key == GLFW_KEY_TAB && !options_.hideUi) toggleSidebar();
+  }
+
+  // F1 and '?': the list of controls; never over the view alone (--hide-ui).
+  void toggleHelp() {
+    if (!options_.hideUi) state_.help = !state_.help;
   }
 
   void toggleOverlay(ViewOverlay overlay) { state_.overlay = state_.overlay == overlay ? ViewOverlay::None : overlay; }

@@ -42,6 +42,10 @@ CameraPose poseAt(const CameraPath& path, double seconds, double framesPerSecond
 // How many frames framePoses gives (a caller bounds it before asking).
 size_t frameCount(const CameraPath& path, double framesPerSecond);
 
+// The most frames a render or a video export of a path makes: an hour at
+// 30 frames a second.
+inline constexpr size_t kMaxPathFrames = 108000;
+
 // The frames of a video or a headless render at framesPerSecond: the poses
 // themselves for a path of one pose a frame; for a timed path, poseAt every
 // 1 / framesPerSecond seconds from its start to its end (its end included).

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace triwalk {
@@ -79,6 +80,29 @@ UncoveredPositions uncoveredPositions(const ViewMesh& mesh, std::span<const glm:
     uncovered.farthest = std::max(uncovered.farthest, nearest);
   }
   return uncovered;
+}
+
+ViewsForError viewsForError(std::span<const std::pair<int, double>> curve, double target) {
+  TRIWALK_CHECK(!curve.empty(), "a count curve has a point");
+  if (curve[0].second <= target) return {double(curve[0].first), ViewsForError::Bound::AtMost};
+  for (size_t i = 1; i < curve.size(); ++i) {
+    const auto [count, error] = curve[i];
+    if (error > target) continue;
+    const auto [before, errorBefore] = curve[i - 1];
+    const double t = (errorBefore - target) / (errorBefore - error);
+    return {double(before) + t * double(count - before), ViewsForError::Bound::Interpolated};
+  }
+  return {double(curve.back().first), ViewsForError::Bound::MoreThan};
+}
+
+std::string formatViews(const ViewsForError& views) {
+  char text[32];
+  switch (views.bound) {
+    case ViewsForError::Bound::AtMost: std::snprintf(text, sizeof text, "<= %.0f", views.views); break;
+    case ViewsForError::Bound::MoreThan: std::snprintf(text, sizeof text, "> %.0f", views.views); break;
+    case ViewsForError::Bound::Interpolated: std::snprintf(text, sizeof text, "%.1f", views.views); break;
+  }
+  return text;
 }
 
 }  // namespace triwalk

@@ -10,6 +10,7 @@
 
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace triwalk {
@@ -58,5 +59,20 @@ struct UncoveredPositions {
 };
 
 UncoveredPositions uncoveredPositions(const ViewMesh& mesh, std::span<const glm::dvec2> positions);
+
+// How many views a method needs to reach a probe error (the paper's "fewer
+// views for the same quality"), along its count curve: (count, probe mean
+// error) points, counts ascending. Where the error first falls to the
+// target or below it, the count is interpolated linearly between that
+// point and the one before; already there at the first point: at most
+// that count; never there: more than the last count.
+struct ViewsForError {
+  enum class Bound { Interpolated, AtMost, MoreThan };
+  double views = 0.0;
+  Bound bound = Bound::Interpolated;
+};
+ViewsForError viewsForError(std::span<const std::pair<int, double>> curve, double target);
+// "23.4", "<= 16", "> 64".
+std::string formatViews(const ViewsForError& views);
 
 }  // namespace triwalk

@@ -1,5 +1,7 @@
 #include "core/selection/reference_selection.h"
 
+#include "core/selection/baselines.h"
+#include "core/selection/walking_distances.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 
@@ -82,6 +84,59 @@ SelectionRun selectReferences(const Dataset& dataset, DatasetTriangleErrors& err
   selection.stopReason = stopReasonName(run.stopReason);
   selection.nextCost = run.stopReason == StopReason::MaxError ? decimator->lowestRefusedError() : decimator->nextCost();
   return run;
+}
+
+namespace {
+
+// The options the selection's own refinement runs with on this data set:
+// the region, and the samples' shares of it as weights.
+RefinementOptions datasetRefinementOptions(const Dataset& dataset, RefinementOptions options,
+                                           const WalkableRegion& region) {
+  options.region = &region;
+  if (options.sampleWeights.empty()) options.sampleWeights = selectionSampleWeights(dataset);
+  return options;
+}
+
+}  // namespace
+
+std::vector<int> InsertionRun::referencesAt(int count) const {
+  const int inserted = count - int(start.size());
+  TRIWALK_CHECK(inserted >= 0 && inserted <= int(insertion.inserted.size()), "a count greedy insertion passed through");
+  std::vector<int> references = start;
+  references.insert(references.end(), insertion.inserted.begin(), insertion.inserted.begin() + inserted);
+  std::sort(references.begin(), references.end());
+  return references;
+}
+
+int insertionStartCount(int count) { return std::max(3, (count + 1) / 2); }
+
+InsertionRun insertReferences(const Dataset& dataset, DatasetTriangleErrors& errors, const RefinementOptions& options,
+                              int startCount, int count, bool quiet) {
+  const auto began = std::chrono::steady_clock::now();
+  const WalkableRegion region = dataset.walkableRegion();
+  const std::vector<glm::dvec2> positions = samplePositions(dataset);
+  const WalkingDistances walking(positions, region);
+  InsertionRun run;
+  run.start = regionUniformSelection(uniformSelection(dataset, startCount), walking, positions, region, startCount);
+  const RefinementOptions insertionOptions = datasetRefinementOptions(dataset, options, region);
+  CachingReconstructionErrors sampleErrors(errors);
+  ProgressReporter progress("greedy insertion", size_t(std::max(0, count - int(run.start.size()))), quiet);
+  run.insertion = insertGreedily(positions, run.start, count, sampleErrors, insertionOptions, &progress);
+  progress.finish();
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  return run;
+}
+
+std::vector<Triangle> refinedReferences(const Dataset& dataset, DatasetTriangleErrors& errors,
+                                        const RefinementOptions& options, std::span<const int> references, bool quiet) {
+  const WalkableRegion region = dataset.walkableRegion();
+  const ViewMesh mesh = datasetMesh(dataset, references, "greedy insertion");
+  CachingReconstructionErrors sampleErrors(errors);
+  ProgressReporter refining("refine: move references", 0, quiet);
+  const RefinementResult refined = refineSelection(mesh.positions(), mesh.triangles(), sampleErrors,
+                                                   datasetRefinementOptions(dataset, options, region), &refining);
+  refining.finish();
+  return refined.triangles;
 }
 
 }  // namespace triwalk

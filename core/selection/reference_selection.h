@@ -70,4 +70,33 @@ std::unique_ptr<EdgeCollapseDecimator> datasetDecimator(const Dataset& dataset, 
 SelectionRun selectReferences(const Dataset& dataset, DatasetTriangleErrors& errors, const SelectionSettings& settings,
                               bool quiet);
 
+// Greedy insertion for a data set (issue 72), by the objective the
+// refinement lowers (the served-sample error, samples weighted by their
+// share of the region), with the selection's errors. It starts from a
+// coverage set: the region-aware uniform baseline at startCount views
+// (regionUniformSelection), so every room and corridor its lattice reaches
+// already has a triangle; greedy steps see one insertion at a time, and it
+// takes three to open a room that has none. Then it inserts until count.
+struct InsertionRun {
+  std::vector<int> start;   // sorted
+  InsertionResult insertion;
+  double seconds = 0.0;
+  // The references at a count between the start's and the run's: the
+  // start and the first insertions, sorted.
+  std::vector<int> referencesAt(int count) const;
+};
+InsertionRun insertReferences(const Dataset& dataset, DatasetTriangleErrors& errors, const RefinementOptions& options,
+                              int startCount, int count, bool quiet);
+
+// The start of greedy insertion for a selection of count views: half of
+// them (at least 3), so that as many are chosen by the error as by the
+// lattice.
+int insertionStartCount(int count);
+
+// Those references refined as decimate refines its own (the Delaunay mesh
+// of them in the region, then refineSelection): "insertion, then the
+// refinement".
+std::vector<Triangle> refinedReferences(const Dataset& dataset, DatasetTriangleErrors& errors,
+                                        const RefinementOptions& options, std::span<const int> references, bool quiet);
+
 }  // namespace triwalk

@@ -375,6 +375,37 @@ public:
     }
   }
 
+  // Greedy insertion: while there are fewer than count references, the
+  // free sample whose insertion gives the lowest objective joins (the lower
+  // index on a tie), scored as the exchange search scores its insertions.
+  // Each joins even where the objective would rise: the count is asked for.
+  // inserted receives them in order, objectives the objective after each.
+  void insertUntil(int count, std::vector<int>& inserted, std::vector<double>& objectives, ProgressReporter* progress) {
+    while (int(references_.size()) < count) {
+      throwIfInterrupted();
+      std::vector<int> insertions;
+      std::vector<std::vector<int>> additions;
+      for (int c = 0; c < int(positions_.size()); ++c) {
+        if (isFrozen(c) || std::binary_search(references_.begin(), references_.end(), c)) continue;
+        insertions.push_back(c);
+        additions.push_back(replaced(-1, c));
+      }
+      const std::vector<std::pair<double, int>> lowest =
+          lowestChanges(additions, insertions, objective_, 1, Scope::AllSamples, nullptr);
+      if (lowest.empty()) return;  // no insertion keeps a triangle in the region
+      const int added = lowest[0].second;
+      adopt(evaluate({replaced(-1, added)})[0]);
+      inserted.push_back(added);
+      objectives.push_back(objective_);
+      if (progress) {
+        char status[64];
+        std::snprintf(status, sizeof status, "mean error %.4f", objective_);
+        progress->setStatus(status);
+        progress->advance();
+      }
+    }
+  }
+
 private:
   bool isFrozen(int sample) const { return !options_.frozen.empty() && options_.frozen[size_t(sample)]; }
 
@@ -733,6 +764,11 @@ private:
     move.removed = without(logged.triangles(), candidate.mesh->triangles());
     move.added = without(candidate.mesh->triangles(), logged.triangles());
     result_.moves.push_back(std::move(move));
+    adopt(candidate);
+  }
+
+  // Makes a candidate the selection.
+  void adopt(const Candidate& candidate) {
     references_ = candidate.references;
     mesh_ = *candidate.mesh;
     objective_ = candidate.objective;
@@ -769,6 +805,23 @@ RefinementResult refineSelection(std::span<const glm::dvec2> positions, const st
   }
   result.objectiveAfter = refinement.objective();
   result.triangles = refinement.mesh().triangles();
+  return result;
+}
+
+InsertionResult insertGreedily(std::span<const glm::dvec2> positions, std::span<const int> start, int count,
+                               ReconstructionErrorSource& errors, const RefinementOptions& options,
+                               ProgressReporter* progress) {
+  const std::optional<ViewMesh> startMesh = ViewMesh::tryDelaunay(
+      std::vector<glm::dvec2>(positions.begin(), positions.end()), start, options.region);
+  TRIWALK_CHECK(startMesh && startMesh->vertexCount() == int(start.size()),
+                "greedy insertion starts from samples that are all views of triangles in the region");
+  RefinementResult statistics;
+  Refinement insertion(positions, startMesh->triangles(), errors, options, statistics);
+  InsertionResult result;
+  result.objectiveBefore = insertion.objective();
+  insertion.insertUntil(count, result.inserted, result.objectives, progress);
+  result.triangles = insertion.mesh().triangles();
+  result.errorsComputed = statistics.errorsComputed;
   return result;
 }
 

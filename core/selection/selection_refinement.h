@@ -150,4 +150,23 @@ RefinementResult refineSelection(std::span<const glm::dvec2> positions, const st
                                  ReconstructionErrorSource& errors, const RefinementOptions& options,
                                  ProgressReporter* progress = nullptr);
 
+// Greedy insertion (issue 72), the mirror image of the collapse: from a
+// start set of references, each step adds the free sample whose insertion
+// lowers the objective above most, until there are count (or no insertion
+// keeps a triangle in the region). Every free sample is scored at every
+// step, priced as the exchange search prices its insertions (options'
+// pricedSamples and repricing; 0: exactly) and scored exactly where it may
+// be the lowest; ties go to the lower index. The insertions are in order,
+// so the first k - start of them are the selection at count k.
+struct InsertionResult {
+  std::vector<int> inserted;        // in the order they joined
+  std::vector<double> objectives;   // after each insertion
+  std::vector<Triangle> triangles;  // the final triangulation
+  double objectiveBefore = 0.0;     // of the start
+  uint64_t errorsComputed = 0;
+};
+InsertionResult insertGreedily(std::span<const glm::dvec2> positions, std::span<const int> start, int count,
+                               ReconstructionErrorSource& errors, const RefinementOptions& options,
+                               ProgressReporter* progress = nullptr);
+
 }  // namespace triwalk

@@ -1,5 +1,6 @@
 #include "core/selection/walking_distances.h"
 
+#include "core/geometry/view_mesh.h"
 #include "core/selection/baselines.h"
 #include "core/support/errors.h"
 
@@ -8,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <queue>
 
 namespace triwalk {
@@ -117,42 +119,155 @@ std::vector<int> farthestPointSelection(const WalkingDistances& distances, int c
   return samples;
 }
 
-std::vector<int> regionUniformSelection(std::vector<int> lattice, const WalkingDistances& distances, int count) {
-  const int n = distances.count();
-  TRIWALK_CHECK(count >= 1 && count <= n, "the region-aware uniform baseline needs 1 <= count <= samples");
-  std::sort(lattice.begin(), lattice.end());
-  lattice.erase(std::unique(lattice.begin(), lattice.end()), lattice.end());
-  std::vector<char> chosen(size_t(n), 0);
-  for (int s : lattice) chosen[size_t(s)] = 1;
-  // Walking distance from each sample to its nearest chosen one.
-  std::vector<float> nearest(size_t(n), std::numeric_limits<float>::infinity());
-  for (int i = 0; i < n; ++i) {
-    for (int s : lattice) nearest[size_t(i)] = std::min(nearest[size_t(i)], distances(i, s));
-  }
-  while (int(lattice.size()) < count) {
-    int farthest = -1;
-    for (int i = 0; i < n; ++i) {
-      if (!chosen[size_t(i)] && (farthest < 0 || nearest[size_t(i)] > nearest[size_t(farthest)])) farthest = i;
-    }
-    chosen[size_t(farthest)] = 1;
-    lattice.push_back(farthest);
-    for (int i = 0; i < n; ++i) nearest[size_t(i)] = std::min(nearest[size_t(i)], distances(i, farthest));
-  }
-  while (int(lattice.size()) > count) {
-    // The chosen sample with the nearest other chosen one.
-    size_t redundant = 0;
-    float redundantDistance = std::numeric_limits<float>::infinity();
-    for (size_t a = 0; a < lattice.size(); ++a) {
-      float closest = std::numeric_limits<float>::infinity();
-      for (size_t b = 0; b < lattice.size(); ++b) {
-        if (a != b) closest = std::min(closest, distances(lattice[a], lattice[b]));
+namespace {
+
+// The region-aware uniform baseline's working set: chosen samples, those
+// that must stay (a view given a triangle, and the samples that gave it),
+// and those that may never join (a view no triangle could hold).
+class RegionUniform {
+public:
+  RegionUniform(const WalkingDistances& distances, std::span<const glm::dvec2> positions, const WalkableRegion& region)
+      : distances_(distances),
+        positions_(positions.begin(), positions.end()),
+        region_(region),
+        protected_(positions.size(), 0),
+        excluded_(positions.size(), 0) {}
+
+  std::vector<int> select(std::vector<int> lattice, int count) {
+    std::sort(lattice.begin(), lattice.end());
+    lattice.erase(std::unique(lattice.begin(), lattice.end()), lattice.end());
+    chosen_ = std::move(lattice);
+    fillTo(count);
+    trimTo(count);
+    // Each round protects a sample for the first time or excludes one for
+    // good, so there are at most 2n rounds.
+    while (chosen_.size() >= 3) {
+      const std::vector<int> dropped = droppedSamples();
+      if (dropped.empty()) break;
+      const int lone = dropped.front();
+      if (!protected_[size_t(lone)] && giveTriangle(lone, count)) {
+        trimTo(count);
+      } else {
+        excluded_[size_t(lone)] = 1;
+        protected_[size_t(lone)] = 0;
+        std::erase(chosen_, lone);
+        fillTo(count);
       }
-      if (closest <= redundantDistance) redundantDistance = closest, redundant = a;
     }
-    lattice.erase(lattice.begin() + ptrdiff_t(redundant));
+    std::sort(chosen_.begin(), chosen_.end());
+    return chosen_;
   }
-  std::sort(lattice.begin(), lattice.end());
-  return lattice;
+
+private:
+  // At most this many samples join to give a lone view a triangle: two
+  // make one with it; the third where the nearest two lie on a line with it.
+  static constexpr int kMaxCompanions = 3;
+
+  // The chosen samples that no triangle inside the region keeps, ascending.
+  std::vector<int> droppedSamples() const {
+    const std::optional<ViewMesh> mesh = ViewMesh::tryDelaunay(positions_, chosen_, &region_);
+    const std::vector<int> kept = mesh ? mesh->vertices() : std::vector<int>();
+    std::vector<int> dropped;
+    for (int s : chosen_) {
+      if (!std::binary_search(kept.begin(), kept.end(), s)) dropped.push_back(s);
+    }
+    std::sort(dropped.begin(), dropped.end());
+    return dropped;
+  }
+
+  bool isKept(int sample) const {
+    const std::vector<int> dropped = droppedSamples();
+    return !std::binary_search(dropped.begin(), dropped.end(), sample);
+  }
+
+  int protectedCount() const { return int(std::count(protected_.begin(), protected_.end(), 1)); }
+
+  bool isFree(int sample) const {
+    return !excluded_[size_t(sample)] && std::find(chosen_.begin(), chosen_.end(), sample) == chosen_.end();
+  }
+
+  // The samples nearest a lone view by walking join, one at a time, until
+  // it is kept; then it and they stay, if the samples that stay still fit
+  // the count. Otherwise they leave again.
+  bool giveTriangle(int lone, int count) {
+    std::vector<int> companions;
+    while (int(companions.size()) < kMaxCompanions) {
+      int nearest = -1;
+      for (int i = 0; i < distances_.count(); ++i) {
+        if (!isFree(i) || !std::isfinite(distances_(lone, i))) continue;
+        if (nearest < 0 || distances_(lone, i) < distances_(lone, nearest)) nearest = i;
+      }
+      if (nearest < 0) break;
+      companions.push_back(nearest);
+      chosen_.push_back(nearest);
+      if (protectedCount() + 1 + int(companions.size()) > count) break;
+      if (isKept(lone)) {
+        protected_[size_t(lone)] = 1;
+        for (int c : companions) protected_[size_t(c)] = 1;
+        return true;
+      }
+    }
+    for (int c : companions) std::erase(chosen_, c);
+    return false;
+  }
+
+  // While short, the free sample farthest from its nearest chosen one joins
+  // (the lower index on a tie).
+  void fillTo(int count) {
+    const int n = distances_.count();
+    std::vector<float> nearest(size_t(n), std::numeric_limits<float>::infinity());
+    for (int i = 0; i < n; ++i) {
+      for (int s : chosen_) nearest[size_t(i)] = std::min(nearest[size_t(i)], distances_(i, s));
+    }
+    std::vector<char> isChosen(size_t(n), 0);
+    for (int s : chosen_) isChosen[size_t(s)] = 1;
+    while (int(chosen_.size()) < count) {
+      int farthest = -1;
+      for (int i = 0; i < n; ++i) {
+        if (isChosen[size_t(i)] || excluded_[size_t(i)]) continue;
+        if (farthest < 0 || nearest[size_t(i)] > nearest[size_t(farthest)]) farthest = i;
+      }
+      if (farthest < 0) break;
+      isChosen[size_t(farthest)] = 1;
+      chosen_.push_back(farthest);
+      for (int i = 0; i < n; ++i) nearest[size_t(i)] = std::min(nearest[size_t(i)], distances_(i, farthest));
+    }
+  }
+
+  // While over, the chosen sample nearest another chosen one leaves, of
+  // those not protected (the later in index order on a tie).
+  void trimTo(int count) {
+    std::sort(chosen_.begin(), chosen_.end());
+    while (int(chosen_.size()) > count) {
+      std::optional<size_t> redundant;
+      float redundantDistance = std::numeric_limits<float>::infinity();
+      for (size_t a = 0; a < chosen_.size(); ++a) {
+        if (protected_[size_t(chosen_[a])]) continue;
+        float closest = std::numeric_limits<float>::infinity();
+        for (size_t b = 0; b < chosen_.size(); ++b) {
+          if (a != b) closest = std::min(closest, distances_(chosen_[a], chosen_[b]));
+        }
+        if (!redundant || closest <= redundantDistance) redundantDistance = closest, redundant = a;
+      }
+      if (!redundant) return;
+      chosen_.erase(chosen_.begin() + ptrdiff_t(*redundant));
+    }
+  }
+
+  const WalkingDistances& distances_;
+  std::vector<glm::dvec2> positions_;
+  const WalkableRegion& region_;
+  std::vector<int> chosen_;
+  std::vector<char> protected_, excluded_;
+};
+
+}  // namespace
+
+std::vector<int> regionUniformSelection(std::vector<int> lattice, const WalkingDistances& distances,
+                                        std::span<const glm::dvec2> positions, const WalkableRegion& region, int count) {
+  TRIWALK_CHECK(count >= 3 && count <= distances.count() && size_t(distances.count()) == positions.size(),
+                "the region-aware uniform baseline needs 3 <= count <= samples, a position for each");
+  return RegionUniform(distances, positions, region).select(std::move(lattice), count);
 }
 
 std::vector<int> geodesicKMedoidsSelection(const WalkingDistances& distances, int count) {

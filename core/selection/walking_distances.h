@@ -43,14 +43,24 @@ std::vector<int> geodesicKMedoidsSelection(const WalkingDistances& distances, in
 std::vector<int> farthestPointSelection(const WalkingDistances& distances, int count);
 
 // The region-aware uniform baseline: a uniform lattice (uniformSelection)
-// brought to exactly count samples by walking distance. While it has
-// fewer, the sample farthest from its nearest chosen one joins: what the
-// lattice left furthest from every view, a room or corridor between its
-// nodes or beyond their reach (a part of the region no chosen sample
-// reaches first). While it has more, the chosen sample nearest to another
-// chosen one leaves: the lattice's most redundant node. Ties: the lower
-// index joins, the higher leaves. Sorted indices.
-std::vector<int> regionUniformSelection(std::vector<int> lattice, const WalkingDistances& distances, int count);
+// made exactly count views of triangles inside the region, so that its
+// count is the number of views that serve. By walking distance: while it
+// has fewer, the sample farthest from its nearest chosen one joins, what
+// the lattice left furthest from every view (a room or corridor between
+// its nodes or beyond their reach); while it has more, the chosen sample
+// nearest another leaves, the lattice's most redundant node (ties: the
+// lower index joins, the higher leaves). Then, while the triangulation in
+// the region (ViewMesh::delaunay) keeps no triangle of some chosen sample
+// (a lone node in a room or corridor, with no neighbour it sees across
+// open floor), the samples nearest it by walking join one at a time until
+// it has one (at most three), and those stay while the count is made up
+// by the most redundant nodes leaving; a node that cannot be given one
+// leaves for good and the count is made up again. So every room the
+// lattice reached gets the fewest extra views that give it a triangle.
+// Fewer than count only if the region has no more samples that can serve.
+// Sorted indices; count >= 3.
+std::vector<int> regionUniformSelection(std::vector<int> lattice, const WalkingDistances& distances,
+                                        std::span<const glm::dvec2> positions, const WalkableRegion& region, int count);
 
 // The same picks in the order they were made, with each one's walking
 // distance to its nearest earlier pick (infinity for the first).

@@ -352,6 +352,13 @@ TEST_CASE("suite: each count selected with the selection's blend weights and wid
   CHECK(lattice["settings"]["error_stride"].get<int>() == 2);
   CHECK(lattice["probe_errors"]["uniform"] == byDefault["probe_errors"]["uniform"]);
 
+  // Tiles forced: each count selected in tiles and stitched, evaluated as before.
+  const nlohmann::json tiled = run(" --tiles 2");
+  CHECK(readSelection(out / "room" / "selection_6.json", Dataset::open(out / "room" / "dataset")).method ==
+        "tiled_edge_collapse");
+  CHECK(tiled["probe_errors"]["uniform"] == byDefault["probe_errors"]["uniform"]);
+  CHECK(!std::filesystem::exists(out / "room" / "selection_6.json.tiles"));
+
   // A selection off its target (as when no valid collapse is left): the
   // baselines get as many references as edge collapse kept.
   REQUIRE(runTriwalk(directory, "decimate --quiet --dataset " + (out / "room" / "dataset").string() +

@@ -20,14 +20,17 @@
 #include "app/setup/decimation_options.h"
 #include "app/setup/option_checks.h"
 #include "app/setup/scene_capture.h"
+#include "app/setup/tile_jobs.h"
 #include "core/io/atomic_file.h"
 #include "core/io/json_fields.h"
 #include "core/selection/baseline_set.h"
 #include "core/selection/evaluation.h"
 #include "core/selection/reference_selection.h"
+#include "core/selection/tiled_selection.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -261,6 +264,7 @@ void registerSuiteCommand(CLI::App& app) {
     std::vector<std::string> only;
     bool reuseSelections = false;
     bool quiet = false;
+    int tiles = 1;
     SelectionArguments selection;
     std::string selectionBlendWeights, selectionSourceMesh;  // decimate's defaults, set below
     int selectionErrorWidth = 0;  // 0: the evaluation's
@@ -279,6 +283,11 @@ void registerSuiteCommand(CLI::App& app) {
   command->add_flag("--reuse-selections", arguments->reuseSelections,
                     "Evaluate selections already in --out instead of decimating again");
   command->add_flag("--quiet", arguments->quiet, "No progress output from the steps");
+  command->add_option("--tiles", arguments->tiles,
+                      "Select each count in this many tiles, stitched (decimate --tiles N), to measure the tiled "
+                      "selection against one decimation; default 1: one decimation")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
   addSelectionOptions(*command, arguments->selection);
   command->add_option("--selection-blend-weights", arguments->selectionBlendWeights,
                       "Blend weights of the errors the selection is made with (--blend-weights: those it is "
@@ -372,8 +381,21 @@ void registerSuiteCommand(CLI::App& app) {
           }
           std::printf("== %s: selecting %d of %d samples\n", scene.name.c_str(), count, dataset.sampleCount());
           std::fflush(stdout);
-          if (!selectionErrors) selectionErrors.emplace(dataset, selectionErrorSettings, LoadedViews::Samples, a.quiet);
           const SelectionSettings selectionOptions = selectionSettings(a.selection, 0.0, count);
+          if (a.tiles > 1) {
+            const auto began = std::chrono::steady_clock::now();
+            const TilePlanRequest request{describeSelectionSettings(selectionOptions, selectionErrorSettings), a.tiles,
+                                          defaultJobs()};
+            const std::filesystem::path work = std::filesystem::path(selectionFile).concat(".tiles");
+            std::optional<StitchResult> stitched = decimateInTiles(dataset, request, work, a.quiet);
+            TRIWALK_CHECK(stitched.has_value(), "the suite runs its tiles in its own process");
+            writeSelection(selectionFile, stitched->selection, dataset);
+            std::filesystem::remove_all(work);
+            selections.push_back(std::move(stitched->selection));
+            selectionSeconds.back() = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+            continue;
+          }
+          if (!selectionErrors) selectionErrors.emplace(dataset, selectionErrorSettings, LoadedViews::Samples, a.quiet);
           SelectionRun run = selectReferences(dataset, *selectionErrors, selectionOptions, a.quiet);
           run.selection.settings = describeSelectionSettings(selectionOptions, selectionErrorSettings);
           writeSelection(selectionFile, run.selection, dataset);

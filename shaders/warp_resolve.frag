@@ -8,7 +8,10 @@
 // Writes the linear colour and the inverse distance of z_front (0 for sky,
 // -1 for holes) for the hole fill, the frame's display colour (holeColor
 // in holes), and depth 1 in holes, 0 elsewhere, so that the fill's last
-// pass runs on the holes alone.
+// pass runs on the holes alone. The holes pass (holesOnly) resolves more
+// references into the holes the first pass left, tested against that mark
+// (GL_LEQUAL): a pixel it covers is marked 0.5, so it passes where the mark
+// is 1 and nowhere else, and the fill still finds the holes left at 1.
 // The trust view (the viewer's T) colours each pixel by the sum of the
 // reliabilities of the layers within the blend interval, over 3: 1 where
 // all three references saw the surface well, 1/3 where one alone saw it
@@ -26,6 +29,7 @@ uniform float epsilon;
 uniform bool showSources;   // color by the references that contributed
 uniform bool showTrust;     // color by how much to trust the pixel (below)
 uniform vec3 holeColor;     // display colour
+uniform bool holesOnly;     // the holes pass (above)
 layout(location = 0) out vec4 outValue;
 layout(location = 1) out vec4 outColor;
 
@@ -60,5 +64,5 @@ void main() {
     float brightness = dot(outColor.rgb, vec3(0.2126, 0.7152, 0.0722));
     outColor = vec4(falseColor(trust) * (0.4 + 0.6 * brightness), 1.0);
   }
-  gl_FragDepth = 0.0;
+  gl_FragDepth = holesOnly ? 0.5 : 0.0;
 }

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -369,6 +370,18 @@ TEST_CASE("suite: each count selected with the selection's blend weights and wid
   INFO("suite: " << offTarget.err);
   REQUIRE(offTarget.status == 0);
   CHECK(offTarget.out.find("| room | 9 (target 6) |") != std::string::npos);
+  // Every table's rule has a column for each of its header's.
+  std::istringstream lines(offTarget.out);
+  std::string line, header;
+  int tables = 0;
+  while (std::getline(lines, line)) {
+    if (line.rfind("|---", 0) == 0) {
+      ++tables;
+      CHECK(std::count(line.begin(), line.end(), '|') == std::count(header.begin(), header.end(), '|'));
+    }
+    header = line;
+  }
+  CHECK(tables == 4);
   const nlohmann::json reused = nlohmann::json::parse(testing::readTextFileOrEmpty(out / "suite.json"))["rows"][0];
   CHECK(reused["samples"].get<int>() == 6);
   CHECK(reused["edge_collapse_samples"].get<int>() == 9);

@@ -116,6 +116,23 @@ Dataset captureSmallBuiltin(const std::filesystem::path& directory, int perPath,
   return Dataset::open(directory / "builtin");
 }
 
+// The small built-in capture walked through at 320x180: every reference
+// of the dense triangulation, frames with a 60-degree vertical view.
+struct SmallBuiltinWalk {
+  testing::TemporaryDirectory directory;
+  std::unique_ptr<GlContext> context = createHeadlessContext();
+  Dataset dataset = captureSmallBuiltin(directory.path(), 3, 256);
+  ViewMesh mesh = ViewMesh::delaunay(samplePositions(dataset), {}, "walk");
+  PanoramaCache cache{dataset, WarpOptions{}, size_t(256) << 20};
+  WalkthroughRenderer renderer{mesh, cache, 320, 180};
+
+  static PinholeCamera camera(glm::vec3 position, float yawDegrees) {
+    PinholeCamera camera = testCamera(position, yawDegrees, 320, 180);
+    camera.verticalFovDegrees = 60.0f;
+    return camera;
+  }
+};
+
 }  // namespace
 
 TEST_CASE("GPU warp matches the CPU reference warp (PSNR >= 35 dB), through EGL and OSMesa alike") {
@@ -470,20 +487,55 @@ TEST_CASE(
   CHECK(std::filesystem::last_write_time(files[0]) != written[0]);
 }
 
+TEST_CASE("holes the triangle's references leave are resolved from the neighbours' before the fill, and nothing else changes") {
+  SmallBuiltinWalk walk;
+  WalkthroughRenderer& renderer = walk.renderer;
+  // Beside a pillar, looking through the courtyard door: the pillar hides
+  // part of the courtyard from the triangle's three references.
+  const PinholeCamera camera = SmallBuiltinWalk::camera({6.4f, 1.1f, 1.6f}, 95.0f);
+  GpuWarpSettings alone;
+  alone.holes = HoleMode::Mark;
+  alone.holesFromNeighbours = false;
+  GpuWarpSettings neighbours = alone;
+  neighbours.holesFromNeighbours = true;
+  renderer.render(camera, alone, true);
+  const size_t holesAlone = renderer.warper().countHoles().holesBefore;
+  const Rgb8Image markedAlone = renderer.warper().readPixels();
+  const WalkthroughRenderer::Frame frame = renderer.render(camera, neighbours, true);
+  const size_t holesWithNeighbours = renderer.warper().countHoles().holesBefore;
+  const Rgb8Image marked = renderer.warper().readPixels();
+  INFO("holes: " << holesAlone << " alone, " << holesWithNeighbours << " with the neighbours' references");
+  // Two neighbouring triangles here, whose other vertices are two samples.
+  CHECK(frame.neighbours.size() == 2);
+  CHECK(frame.statistics.fallbackDrawn == int(frame.neighbours.size()));
+  REQUIRE(holesAlone > 100);
+  CHECK(holesWithNeighbours < holesAlone / 2);
+  // Only holes change: every pixel the triangle's references covered is
+  // the same, byte for byte.
+  const glm::u8vec3 hole = glm::u8vec3(glm::round(255.0f * holeDisplayColor(HoleMode::Mark)));
+  size_t covered = 0, changed = 0;
+  for (int y = 0; y < marked.height; ++y) {
+    for (int x = 0; x < marked.width; ++x) {
+      if (markedAlone.at(x, y) == hole) continue;
+      ++covered;
+      changed += marked.at(x, y) != markedAlone.at(x, y);
+    }
+  }
+  CHECK(covered > 0);
+  CHECK(changed == 0);
+  // A frame without holes draws no extra reference.
+  const WalkthroughRenderer::Frame open = renderer.render(SmallBuiltinWalk::camera({3.1f, 2.2f, 1.6f}, 20.0f), neighbours, true);
+  if (renderer.warper().countHoles().holesBefore == 0) CHECK(open.statistics.fallbackDrawn == 0);
+}
+
 TEST_CASE("golden frames: the built-in scene captured small and walked through renders as committed") {
   // Regenerate with: TRIWALK_UPDATE_GOLDEN=1 build/release/tests/triwalk_render_tests -tc="golden*"
-  testing::TemporaryDirectory directory;
-  auto context = createHeadlessContext();
-  const Dataset dataset = captureSmallBuiltin(directory.path(), 3, 256);
-  const ViewMesh mesh = ViewMesh::delaunay(samplePositions(dataset), {}, "golden");
-  PanoramaCache cache(dataset, WarpOptions{}, size_t(256) << 20);
-  WalkthroughRenderer renderer(mesh, cache, 320, 180);
+  SmallBuiltinWalk walk;
+  WalkthroughRenderer& renderer = walk.renderer;
   const bool update = std::getenv("TRIWALK_UPDATE_GOLDEN") != nullptr;
   const std::pair<glm::vec3, float> poses[] = {{{3.1f, 2.2f, 1.6f}, 20.0f}, {{6.4f, 1.1f, 1.6f}, 95.0f}, {{8.0f, 3.9f, 1.6f}, 230.0f}};
   for (size_t i = 0; i < std::size(poses); ++i) {
-    PinholeCamera camera = testCamera(poses[i].first, poses[i].second, 320, 180);
-    camera.verticalFovDegrees = 60.0f;
-    renderer.render(camera, GpuWarpSettings{}, true);
+    renderer.render(SmallBuiltinWalk::camera(poses[i].first, poses[i].second), GpuWarpSettings{}, true);
     const Rgb8Image frame = renderer.warper().readPixels();
     const std::filesystem::path golden = assetDirectory() / "golden" / ("builtin_frame_" + std::to_string(i) + ".png");
     if (update) {

@@ -151,6 +151,62 @@ void benchReferencePreparation(BenchTable& table, const Dataset& dataset, const 
   }
 }
 
+// Issue 71: the holes the triangle's references leave before the fill,
+// resolved from the neighbouring triangles' three nearest references or
+// not, along render's rotate and translate paths of the selection (every
+// panorama waited for, full resolution, simplified meshes): the fraction of
+// pixels the fill paints, and the frame time it costs.
+void benchHolesFromNeighbours(BenchTable& table, const Dataset& dataset, const ViewMesh& mesh) {
+  glm::dvec2 lower(1e30), upper(-1e30);
+  for (int v : mesh.vertices()) lower = glm::min(lower, mesh.position(v)), upper = glm::max(upper, mesh.position(v));
+  const float eye = sampleEyeHeight(dataset);
+  const glm::vec3 middle(glm::vec2(0.5 * (lower + upper)), eye);
+  std::vector<CameraPose> poses = rotatePath(middle, 36);
+  const std::vector<CameraPose> across =
+      translatePath({float(lower.x), middle.y, eye}, {float(upper.x), middle.y, eye}, 24, 90.0f);
+  poses.insert(poses.end(), across.begin(), across.end());
+  WarpOptions warpOptions;
+  warpOptions.mesh = SourceMesh::Simplified;
+  PanoramaCache cache(dataset, warpOptions, size_t(1) << 30);
+  WalkthroughRenderer renderer(mesh, cache, 1280, 720);
+  struct Way {
+    double holes = 0.0;  // mean fraction of the frame's pixels
+    int framesWithHoles = 0;
+    std::vector<double> milliseconds;
+  };
+  auto run = [&](bool neighbours) {
+    GpuWarpSettings settings;
+    settings.holesFromNeighbours = neighbours;
+    Way way;
+    for (const CameraPose& pose : poses) {
+      PinholeCamera camera;
+      camera.position = pose.position;
+      camera.yawDegrees = pose.yawDegrees;
+      renderer.render(camera, settings, true);  // loads the panoramas
+      glFinish();
+      const auto start = BenchClock::now();
+      renderer.render(camera, settings, true);
+      glFinish();
+      way.milliseconds.push_back(1000.0 * secondsSince(start));
+      const GpuHoleCounts holes = renderer.warper().countHoles();
+      way.holes += double(holes.holesBefore) / double(holes.pixels) / double(poses.size());
+      way.framesWithHoles += holes.holesBefore > 0;
+    }
+    return way;
+  };
+  const Way without = run(false), with = run(true);
+  const std::string size = "1280x720, render's rotate (36) and translate (24) paths, " +
+                           std::to_string(mesh.vertexCount()) + " references of " +
+                           std::to_string(dataset.manifest().width) + "x" + std::to_string(dataset.manifest().height);
+  table.add({"holes before the fill: the triangle's references alone / and the neighbours' three nearest", size,
+             formatNumber(100.0 * without.holes, 3) + "% / " + formatNumber(100.0 * with.holes, 3) + "% of the pixels",
+             "frames with holes " + std::to_string(without.framesWithHoles) + " / " + std::to_string(with.framesWithHoles) +
+                 " of " + std::to_string(poses.size())});
+  table.add({"frame time with holes resolved from the neighbours, median / p95 (without: the triangle's alone)", size,
+             formatMedianAndP95(with.milliseconds),
+             "without: " + formatMedianAndP95(without.milliseconds) + "; simplified meshes, full resolution"});
+}
+
 }  // namespace
 
 // The viewer's frame loop without the window: walking along a line at
@@ -228,6 +284,7 @@ void benchViewer(BenchTable& table, const Dataset& dataset, const std::string& s
     }
   }
   benchReferencePreparation(table, dataset, mesh);
+  benchHolesFromNeighbours(table, dataset, mesh);
 }
 
 }  // namespace triwalk

@@ -155,9 +155,12 @@ std::string samplesCell(const SuiteRow& r) {
                                    : std::to_string(r.reachedCount) + " (target " + std::to_string(r.count) + ")";
 }
 
+// A table's header and rule: the first columns ("a | b"), a column per
+// method, and a last column if named.
 std::string headerOf(const std::string& first, const std::vector<std::string>& methods, const std::string& prefix,
                      const std::string& last = "") {
   std::string header = "| " + first, rule = "|---";
+  for (const char c : first) rule += c == '|' ? "|---" : "";
   for (const std::string& method : methods) header += " | " + prefix + methodLabel(method), rule += "|---";
   if (!last.empty()) header += " | " + last, rule += "|---";
   return header + " |\n" + rule + "|\n";

@@ -35,8 +35,10 @@ GpuWarper::GpuWarper(int width, int height)
       simplifiedLayerProgram_("warp_layer.vert", "warp_layer_simplified.frag"),
       resolveProgram_("fullscreen.vert", "warp_resolve.frag"),
       pushProgram_("fullscreen.vert", "fill_push.frag"),
-      pullProgram_("fullscreen.vert", "fill_pull.frag") {
+      pullProgram_("fullscreen.vert", "fill_pull.frag"),
+      holeQueryProgram_("fullscreen.vert", "hole_query.frag") {
   vertexArray_ = createVertexArray();
+  holeQuery_ = createQuery(GL_ANY_SAMPLES_PASSED);
   glVertexArrayAttribFormat(vertexArray_.get(), 0, 4, GL_FLOAT, GL_FALSE, 0);
   glVertexArrayAttribBinding(vertexArray_.get(), 0, 0);
   resize(width, height);
@@ -48,6 +50,8 @@ void GpuWarper::resize(int width, int height) {
   height_ = height;
   depth_ = createTexture(GL_TEXTURE_2D);
   glTextureStorage2D(depth_.get(), 1, GL_DEPTH_COMPONENT32F, width, height);
+  layerDepth_ = createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(layerDepth_.get(), 1, GL_DEPTH_COMPONENT32F, width, height);
   for (size_t k = 0; k < layers_.size(); ++k) {
     layers_[k] = createTexture(GL_TEXTURE_2D);
     // Colour, 1 / distance and reliability packed (shaders/warp_layer_texel.glsl).
@@ -57,7 +61,7 @@ void GpuWarper::resize(int width, int height) {
     glTextureParameteri(layers_[k].get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     layerFramebuffers_[k] = createFramebuffer();
     glNamedFramebufferTexture(layerFramebuffers_[k].get(), GL_COLOR_ATTACHMENT0, layers_[k].get(), 0);
-    glNamedFramebufferTexture(layerFramebuffers_[k].get(), GL_DEPTH_ATTACHMENT, depth_.get(), 0);
+    glNamedFramebufferTexture(layerFramebuffers_[k].get(), GL_DEPTH_ATTACHMENT, layerDepth_.get(), 0);
     requireCompleteFramebuffer(layerFramebuffers_[k], "warp layer");
   }
   output_ = createTexture(GL_TEXTURE_2D);
@@ -160,8 +164,10 @@ void GpuWarper::drawLayer(const PinholeCamera& camera, const GpuPanorama& refere
 }
 
 GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<const GpuPanorama* const> references,
-                                     const GpuWarpSettings& settings, bool timePasses, float frameScale) {
+                                     const GpuWarpSettings& settings, bool timePasses, float frameScale,
+                                     std::span<const GpuPanorama* const> fallback) {
   TRIWALK_CHECK(!references.empty() && references.size() <= 3, "the warp takes one to three references");
+  TRIWALK_CHECK(fallback.size() <= 3, "the holes pass takes up to three references");
   TRIWALK_CHECK(camera.width == width_ && camera.height == height_, "camera size differs from the warper's");
   GpuFrameStatistics statistics;
   glViewport(0, 0, width_, height_);
@@ -169,7 +175,43 @@ GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<cons
   glDisable(GL_CULL_FACE);
   glDisable(GL_SCISSOR_TEST);
   glBindVertexArray(vertexArray_.get());
+  drawAndResolve(camera, references, settings, false, timePasses, frameScale, statistics);
 
+  const bool showsReferences = settings.showSources || settings.showTrust;
+  if (settings.holesFromNeighbours && !showsReferences && !fallback.empty()) {
+    const auto fallbackStart = std::chrono::steady_clock::now();
+    if (anyHoles()) {
+      GpuFrameStatistics extra;
+      drawAndResolve(camera, fallback, settings, true, false, frameScale, extra);
+      statistics.fallbackDrawn = int(fallback.size());
+      statistics.tilesDrawn += extra.tilesDrawn;
+      statistics.tilesCulled += extra.tilesCulled;
+      statistics.trianglesDrawn += extra.trianglesDrawn;
+    }
+    if (timePasses) {
+      glFinish();
+      statistics.fallbackMilliseconds = millisecondsSince(fallbackStart);
+    }
+  }
+
+  lastFrameFilled_ = settings.holes == HoleMode::Fill && !showsReferences && levelSizes_.size() > 1;
+  if (lastFrameFilled_) {
+    const auto fillStart = std::chrono::steady_clock::now();
+    fillHoles(settings.blend.epsilon);
+    if (timePasses) {
+      glFinish();
+      statistics.fillMilliseconds = millisecondsSince(fillStart);
+    }
+  }
+  glViewport(0, 0, width_, height_);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glBindVertexArray(0);
+  return statistics;
+}
+
+void GpuWarper::drawAndResolve(const PinholeCamera& camera, std::span<const GpuPanorama* const> references,
+                               const GpuWarpSettings& settings, bool holesOnly, bool timePasses, float frameScale,
+                               GpuFrameStatistics& statistics) {
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);
@@ -196,8 +238,10 @@ GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<cons
 
   const auto resolveStart = std::chrono::steady_clock::now();
   glBindFramebuffer(GL_FRAMEBUFFER, blendedFramebuffer_.get());
-  glEnable(GL_DEPTH_TEST);  // depth writes need the test on: every pixel writes its hole mark
-  glDepthFunc(GL_ALWAYS);
+  // Depth writes need the test on: every pixel writes its hole mark; the
+  // holes pass writes only where the mark is a hole (see warp_resolve.frag).
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(holesOnly ? GL_LEQUAL : GL_ALWAYS);
   resolveProgram_.use();
   std::vector<glm::vec3> positions;
   for (const GpuPanorama* reference : references) positions.push_back(reference->position());
@@ -215,6 +259,7 @@ GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<cons
   resolveProgram_.set("epsilon", settings.blend.epsilon);
   resolveProgram_.set("showSources", settings.showSources ? 1 : 0);
   resolveProgram_.set("showTrust", settings.showTrust ? 1 : 0);
+  resolveProgram_.set("holesOnly", holesOnly ? 1 : 0);
   resolveProgram_.set("holeColor", settings.showTrust ? glm::vec3(0.0f) : holeDisplayColor(settings.holes));
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glDisable(GL_DEPTH_TEST);
@@ -223,20 +268,25 @@ GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<cons
     glFinish();
     statistics.resolveMilliseconds = millisecondsSince(resolveStart);
   }
+}
 
-  lastFrameFilled_ = settings.holes == HoleMode::Fill && !settings.showSources && !settings.showTrust && levelSizes_.size() > 1;
-  if (lastFrameFilled_) {
-    const auto fillStart = std::chrono::steady_clock::now();
-    fillHoles(settings.blend.epsilon);
-    if (timePasses) {
-      glFinish();
-      statistics.fillMilliseconds = millisecondsSince(fillStart);
-    }
-  }
-  glViewport(0, 0, width_, height_);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glBindVertexArray(0);
-  return statistics;
+bool GpuWarper::anyHoles() {
+  // The full-screen triangle lies at depth 0.5: it passes where the
+  // resolve marked a hole (1) and nowhere else.
+  glBindFramebuffer(GL_FRAMEBUFFER, blendedFramebuffer_.get());
+  glEnable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  holeQueryProgram_.use();
+  glBeginQuery(GL_ANY_SAMPLES_PASSED, holeQuery_.get());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glEndQuery(GL_ANY_SAMPLES_PASSED);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_DEPTH_TEST);
+  GLuint passed = 0;
+  glGetQueryObjectuiv(holeQuery_.get(), GL_QUERY_RESULT, &passed);
+  return passed != 0;
 }
 
 void GpuWarper::fillHoles(float epsilon) {

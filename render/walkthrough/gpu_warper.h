@@ -9,7 +9,11 @@
 // and the frame's display colours (holes marked, black, or left for the
 // fill); the push-pull passes of the hole fill (core/synthesis/hole_fill.h)
 // then fill the holes from the background, the last one on the hole pixels
-// alone. One geometry pass per reference (not two over
+// alone. Before the fill, pixels that none of the references saw may be
+// resolved from up to three more (the neighbouring triangles' references,
+// issue 71): drawn only when the frame has holes (an occlusion query), into
+// the holes alone, so that the fill paints only what no loaded reference
+// saw. One geometry pass per reference (not two over
 // all references) halves the triangles llvmpipe sets up, and matches the
 // CPU reference exactly where a reference overlaps itself. Tiles of the
 // reference grids outside the view frustum are not drawn.
@@ -33,6 +37,10 @@ struct GpuWarpSettings {
   bool showSources = false;  // red, green, blue: which references contributed (holes not filled)
   // How much to trust each pixel (shaders/warp_resolve.frag; holes black, not filled).
   bool showTrust = false;
+  // Resolve the holes from the extra references given (render's fallback)
+  // before the fill; not with showSources or showTrust, which show the
+  // triangle's own references.
+  bool holesFromNeighbours = true;
 
   bool operator==(const GpuWarpSettings&) const = default;
 };
@@ -43,6 +51,8 @@ struct GpuFrameStatistics {
   // With timing requested (glFinish after each pass): milliseconds.
   std::array<double, 3> layerMilliseconds{};
   double resolveMilliseconds = 0.0;
+  int fallbackDrawn = 0;              // extra references resolved into the holes
+  double fallbackMilliseconds = 0.0;  // their layers and resolve, with the query
   double fillMilliseconds = 0.0;  // push-pull passes; 0 when not filling
 };
 
@@ -60,9 +70,12 @@ public:
 
   // Renders into the output framebuffer; references: 1 to 3. frameScale:
   // the frame's share of the window's side (a walking frame below 1 may
-  // draw the references' walking meshes, GpuPanorama::tilesAt).
+  // draw the references' walking meshes, GpuPanorama::tilesAt). fallback:
+  // up to 3 more, resolved into the holes the references leave (with
+  // settings.holesFromNeighbours).
   GpuFrameStatistics render(const PinholeCamera& camera, std::span<const GpuPanorama* const> references,
-                            const GpuWarpSettings& settings, bool timePasses = false, float frameScale = 1.0f);
+                            const GpuWarpSettings& settings, bool timePasses = false, float frameScale = 1.0f,
+                            std::span<const GpuPanorama* const> fallback = {});
 
   // The last frame, top row first.
   Rgb8Image readPixels() const;
@@ -75,13 +88,22 @@ private:
   void drawLayer(const PinholeCamera& camera, const GpuPanorama& reference, int layer, float frameScale,
                  GpuFrameStatistics& statistics);
   void fillHoles(float epsilon);
+  // Draws the references' layers and resolves them: into every pixel, or
+  // (holesOnly) into the holes the last resolve marked.
+  void drawAndResolve(const PinholeCamera& camera, std::span<const GpuPanorama* const> references,
+                      const GpuWarpSettings& settings, bool holesOnly, bool timePasses, float frameScale,
+                      GpuFrameStatistics& statistics);
+  // Whether the last resolve marked any hole (an occlusion query).
+  bool anyHoles();
 
   int width_ = 0, height_ = 0;
   ShaderProgram gridLayerProgram_, simplifiedLayerProgram_;
   ShaderProgram resolveProgram_;
-  ShaderProgram pushProgram_, pullProgram_;
+  ShaderProgram pushProgram_, pullProgram_, holeQueryProgram_;
   std::array<GlTexture, 3> layers_;
-  GlTexture depth_;
+  GlTexture layerDepth_;  // the layers' depth test
+  GlTexture depth_;       // the resolve's hole mark (1 hole, 0.5 resolved from the fallback, 0 resolved)
+  GlQuery holeQuery_;
   std::array<GlFramebuffer, 3> layerFramebuffers_;
   // Linear blend (rgb, inverse distance; -1 for holes), then the fill's
   // pyramid: pushed_[l] is level l + 1, pulled_[l] is level l filled (at

@@ -17,7 +17,7 @@ int WalkthroughRenderer::triangleAt(glm::vec3 position) {
   return lastTriangle_;
 }
 
-void WalkthroughRenderer::prefetch(int triangle, glm::vec3 position) {
+std::vector<int> WalkthroughRenderer::prefetch(int triangle, glm::vec3 position) {
   const Triangle& current = mesh_.triangles()[size_t(triangle)];
   std::vector<int> wanted(current.begin(), current.end());
   // Then the other vertices of the neighbouring triangles, nearest first.
@@ -38,6 +38,7 @@ void WalkthroughRenderer::prefetch(int triangle, glm::vec3 position) {
   });
   wanted.insert(wanted.end(), neighbours.begin(), neighbours.end());
   cache_.request(wanted);
+  return neighbours;
 }
 
 WalkthroughRenderer::Frame WalkthroughRenderer::render(const PinholeCamera& camera, const GpuWarpSettings& settings,
@@ -47,15 +48,29 @@ WalkthroughRenderer::Frame WalkthroughRenderer::render(const PinholeCamera& came
   if (frame.triangle < 0) return frame;
   const Triangle& triangle = mesh_.triangles()[size_t(frame.triangle)];
   frame.references = {triangle[0], triangle[1], triangle[2]};
-  prefetch(frame.triangle, camera.position);
+  const std::vector<int> neighbours = prefetch(frame.triangle, camera.position);
   std::vector<const GpuPanorama*> references;
   for (int sample : triangle) {
     const GpuPanorama* panorama = waitForPanoramas ? cache_.wait(sample) : cache_.find(sample);
     if (panorama) references.push_back(panorama);
   }
   frame.available = int(references.size());
+  // The three nearest neighbours for the holes; a walk that does not wait
+  // takes those already loaded.
+  std::vector<const GpuPanorama*> fallback;
+  if (settings.holesFromNeighbours) {
+    for (int sample : neighbours) {
+      if (fallback.size() == 3) break;
+      const GpuPanorama* panorama = waitForPanoramas ? cache_.wait(sample) : cache_.find(sample);
+      if (!panorama) continue;
+      fallback.push_back(panorama);
+      frame.neighbours.push_back(sample);
+    }
+  }
   if (warper_.width() != camera.width || warper_.height() != camera.height) warper_.resize(camera.width, camera.height);
-  if (!references.empty()) frame.statistics = warper_.render(camera, references, settings, timePasses, frameScale);
+  if (!references.empty()) {
+    frame.statistics = warper_.render(camera, references, settings, timePasses, frameScale, fallback);
+  }
   return frame;
 }
 

@@ -406,6 +406,16 @@ TEST_CASE("import and export from the command line: a round trip, its report, an
   const nlohmann::json manifest = nlohmann::json::parse(testing::readTextFileOrEmpty(imported / "manifest.json"));
   CHECK(manifest["capture"]["imported"]["layout"] == "realsee");
   CHECK(manifest["probes"].size() == 2);
+  CHECK(run.out.find("replaces it") == std::string::npos);
+  // Into the same folder again: the data set there is replaced, and said
+  // so before the import begins.
+  const RunResult again = runTriwalk(directory, "import --quiet --from realsee --in " + exported.string() + " --out " +
+                                                    imported.string() + " --probes-fraction 0.2 --seed 3");
+  REQUIRE(again.status == 0);
+  const size_t said = again.out.find(imported.string() + " holds a data set of 8 samples");
+  CHECK(said != std::string::npos);
+  CHECK(again.out.find("this import replaces it once complete") != std::string::npos);
+  CHECK(said < again.out.find("imported 8 samples"));
 
   for (const auto& [arguments, message] : std::vector<std::pair<std::string, std::string>>{
            {"import --from matterport --in " + exported.string() + " --out x", "--from"},

@@ -2,6 +2,7 @@
 // (core/import/dataset_import.h); README, "Bring your own capture".
 
 #include "app/commands/commands.h"
+#include "app/setup/scene_capture.h"
 #include "app/setup/option_checks.h"
 #include "core/import/dataset_import.h"
 
@@ -65,6 +66,7 @@ void registerImportCommand(CLI::App& app) {
 
     const std::filesystem::path in = std::filesystem::absolute(a.in).lexically_normal();
     const std::vector<SourceView> views = scanCaptureLayout(layout, in, layoutOptions);
+    announceReplacedDataset(a.out, "import");
     const nlohmann::json provenance = {{"layout", a.from}, {"source", in.string()}, {"matrix", a.matrix}};
     const std::string scene = (in.has_filename() ? in.filename() : in.parent_path().filename()).string();
     const CaptureImportReport report = importCapture(views, a.options, scene, provenance, a.out);

@@ -1,13 +1,29 @@
 #include "app/setup/scene_capture.h"
 
 #include "render/capture/walkable_area.h"
+#include "core/io/dataset.h"
+#include "core/support/errors.h"
 #include "render/gl/gl_context.h"
 
 #include <cstdio>
 
 namespace triwalk {
 
+void announceReplacedDataset(const std::filesystem::path& out, const char* command) {
+  if (!std::filesystem::exists(out / kManifestFileName)) return;
+  std::string held = "a data set";
+  try {
+    const Dataset earlier = Dataset::open(out);
+    held += " of " + std::to_string(earlier.sampleCount()) + " samples (scene " + earlier.manifest().scene + ")";
+  } catch (const InputError&) {
+    held += " (its manifest unreadable)";
+  }
+  std::printf("%s holds %s: this %s replaces it once complete\n", out.c_str(), held.c_str(), command);
+  std::fflush(stdout);
+}
+
 CaptureSummary captureScene(const SceneCaptureRequest& request) {
+  announceReplacedDataset(request.out, "capture");
   LoadedScene loaded = loadSceneForCapture(request.scene, request.import);
   auto context = createHeadlessContext(parseHeadlessBackend(request.gl));
   CaptureOptions options = request.options;

@@ -7,6 +7,7 @@
 #include "app/setup/scene_loading.h"
 #include "render/capture/dataset_capture.h"
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -24,5 +25,10 @@ struct SceneCaptureRequest {
 };
 
 CaptureSummary captureScene(const SceneCaptureRequest& request);
+
+// Says, before a capture or an import into out begins, that out holds a
+// data set and that it is replaced once the new one is complete (as a
+// whole, never in part), naming what it holds; nothing otherwise.
+void announceReplacedDataset(const std::filesystem::path& out, const char* command);
 
 }  // namespace triwalk

@@ -42,12 +42,6 @@
   X(PFNGLBINDTEXTUREUNITPROC, glBindTextureUnit)                           \
   X(PFNGLGETTEXTUREIMAGEPROC, glGetTextureImage)                           \
   X(PFNGLGETTEXTURESUBIMAGEPROC, glGetTextureSubImage)                     \
-  X(PFNGLCREATEQUERIESPROC, glCreateQueries)                               \
-  X(PFNGLDELETEQUERIESPROC, glDeleteQueries)                               \
-  X(PFNGLBEGINQUERYPROC, glBeginQuery)                                     \
-  X(PFNGLENDQUERYPROC, glEndQuery)                                         \
-  X(PFNGLGETQUERYOBJECTUIVPROC, glGetQueryObjectuiv)                       \
-  X(PFNGLCOLORMASKPROC, glColorMask)                                       \
   X(PFNGLCREATESAMPLERSPROC, glCreateSamplers)                             \
   X(PFNGLDELETESAMPLERSPROC, glDeleteSamplers)                             \
   X(PFNGLSAMPLERPARAMETERIPROC, glSamplerParameteri)                       \

@@ -30,12 +30,6 @@ GlVertexArray createVertexArray() {
   return GlVertexArray(name);
 }
 
-GlQuery createQuery(GLenum target) {
-  GLuint name = 0;
-  glCreateQueries(target, 1, &name);
-  return GlQuery(name);
-}
-
 GlSampler createSampler(GLenum filter) {
   GLuint name = 0;
   glCreateSamplers(1, &name);

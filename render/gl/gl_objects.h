@@ -41,13 +41,11 @@ using GlBuffer = GlObject<glDeleteBuffers>;
 using GlFramebuffer = GlObject<glDeleteFramebuffers>;
 using GlVertexArray = GlObject<glDeleteVertexArrays>;
 using GlSampler = GlObject<glDeleteSamplers>;
-using GlQuery = GlObject<glDeleteQueries>;
 
 GlTexture createTexture(GLenum target);
 GlBuffer createBuffer();
 GlFramebuffer createFramebuffer();
 GlVertexArray createVertexArray();
-GlQuery createQuery(GLenum target);
 // A sampler object with the given min/mag filter, clamped to edge.
 GlSampler createSampler(GLenum filter);
 

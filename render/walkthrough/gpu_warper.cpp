@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <bit>
 #include <chrono>
+#include <optional>
 #include <vector>
 
 namespace triwalk {
@@ -35,10 +36,8 @@ GpuWarper::GpuWarper(int width, int height)
       simplifiedLayerProgram_("warp_layer.vert", "warp_layer_simplified.frag"),
       resolveProgram_("fullscreen.vert", "warp_resolve.frag"),
       pushProgram_("fullscreen.vert", "fill_push.frag"),
-      pullProgram_("fullscreen.vert", "fill_pull.frag"),
-      holeQueryProgram_("fullscreen.vert", "hole_query.frag") {
+      pullProgram_("fullscreen.vert", "fill_pull.frag") {
   vertexArray_ = createVertexArray();
-  holeQuery_ = createQuery(GL_ANY_SAMPLES_PASSED);
   glVertexArrayAttribFormat(vertexArray_.get(), 0, 4, GL_FLOAT, GL_FALSE, 0);
   glVertexArrayAttribBinding(vertexArray_.get(), 0, 0);
   resize(width, height);
@@ -180,9 +179,14 @@ GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<cons
   const bool showsReferences = settings.showSources || settings.showTrust;
   if (settings.holesFromNeighbours && !showsReferences && !fallback.empty()) {
     const auto fallbackStart = std::chrono::steady_clock::now();
-    if (anyHoles()) {
+    if (const std::optional<PixelBox> holes = holeBounds()) {
+      // Only the holes' bounding box is drawn: the layers are cleared and
+      // resolved inside it alone.
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(holes->x0, holes->y0, holes->x1 - holes->x0 + 1, holes->y1 - holes->y0 + 1);
       GpuFrameStatistics extra;
       drawAndResolve(camera, fallback, settings, true, false, frameScale, extra);
+      glDisable(GL_SCISSOR_TEST);
       statistics.fallbackDrawn = int(fallback.size());
       statistics.tilesDrawn += extra.tilesDrawn;
       statistics.tilesCulled += extra.tilesCulled;
@@ -270,23 +274,21 @@ void GpuWarper::drawAndResolve(const PinholeCamera& camera, std::span<const GpuP
   }
 }
 
-bool GpuWarper::anyHoles() {
-  // The full-screen triangle lies at depth 0.5: it passes where the
-  // resolve marked a hole (1) and nowhere else.
-  glBindFramebuffer(GL_FRAMEBUFFER, blendedFramebuffer_.get());
-  glEnable(GL_DEPTH_TEST);
-  glDepthMask(GL_FALSE);
-  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  holeQueryProgram_.use();
-  glBeginQuery(GL_ANY_SAMPLES_PASSED, holeQuery_.get());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glEndQuery(GL_ANY_SAMPLES_PASSED);
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glDepthMask(GL_TRUE);
-  glDisable(GL_DEPTH_TEST);
-  GLuint passed = 0;
-  glGetQueryObjectuiv(holeQuery_.get(), GL_QUERY_RESULT, &passed);
-  return passed != 0;
+std::optional<GpuWarper::PixelBox> GpuWarper::holeBounds() {
+  holeMark_.resize(size_t(width_) * size_t(height_));
+  glGetTextureImage(depth_.get(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(holeMark_.size() * sizeof(float)),
+                    holeMark_.data());
+  PixelBox box{width_, height_, -1, -1};
+  for (int y = 0; y < height_; ++y) {
+    const float* row = holeMark_.data() + size_t(y) * size_t(width_);
+    for (int x = 0; x < width_; ++x) {
+      if (row[x] < 1.0f) continue;
+      box.x0 = std::min(box.x0, x), box.x1 = std::max(box.x1, x);
+      box.y0 = std::min(box.y0, y), box.y1 = std::max(box.y1, y);
+    }
+  }
+  if (box.x1 < 0) return std::nullopt;
+  return box;
 }
 
 void GpuWarper::fillHoles(float epsilon) {

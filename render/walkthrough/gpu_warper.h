@@ -11,9 +11,9 @@
 // then fill the holes from the background, the last one on the hole pixels
 // alone. Before the fill, pixels that none of the references saw may be
 // resolved from up to three more (the neighbouring triangles' references,
-// issue 71): drawn only when the frame has holes (an occlusion query), into
-// the holes alone, so that the fill paints only what no loaded reference
-// saw. One geometry pass per reference (not two over
+// issue 71): drawn only when the frame has holes, inside their bounding
+// box, into the holes alone, so that the fill paints only what no loaded
+// reference saw. One geometry pass per reference (not two over
 // all references) halves the triangles llvmpipe sets up, and matches the
 // CPU reference exactly where a reference overlaps itself. Tiles of the
 // reference grids outside the view frustum are not drawn.
@@ -27,7 +27,9 @@
 #include "render/walkthrough/gpu_panorama.h"
 
 #include <array>
+#include <optional>
 #include <span>
+#include <vector>
 
 namespace triwalk {
 
@@ -52,7 +54,7 @@ struct GpuFrameStatistics {
   std::array<double, 3> layerMilliseconds{};
   double resolveMilliseconds = 0.0;
   int fallbackDrawn = 0;              // extra references resolved into the holes
-  double fallbackMilliseconds = 0.0;  // their layers and resolve, with the query
+  double fallbackMilliseconds = 0.0;  // reading the hole mark back, their layers and resolve
   double fillMilliseconds = 0.0;  // push-pull passes; 0 when not filling
 };
 
@@ -93,17 +95,22 @@ private:
   void drawAndResolve(const PinholeCamera& camera, std::span<const GpuPanorama* const> references,
                       const GpuWarpSettings& settings, bool holesOnly, bool timePasses, float frameScale,
                       GpuFrameStatistics& statistics);
-  // Whether the last resolve marked any hole (an occlusion query).
-  bool anyHoles();
+  // The bounding box of the holes the last resolve marked, in pixels
+  // (rows from the bottom, corners included); none without holes. Reads
+  // the mark back: about 4 bytes a pixel, a copy on llvmpipe.
+  struct PixelBox {
+    int x0, y0, x1, y1;
+  };
+  std::optional<PixelBox> holeBounds();
 
   int width_ = 0, height_ = 0;
   ShaderProgram gridLayerProgram_, simplifiedLayerProgram_;
   ShaderProgram resolveProgram_;
-  ShaderProgram pushProgram_, pullProgram_, holeQueryProgram_;
+  ShaderProgram pushProgram_, pullProgram_;
   std::array<GlTexture, 3> layers_;
   GlTexture layerDepth_;  // the layers' depth test
   GlTexture depth_;       // the resolve's hole mark (1 hole, 0.5 resolved from the fallback, 0 resolved)
-  GlQuery holeQuery_;
+  std::vector<float> holeMark_;  // depth_ read back (holeBounds)
   std::array<GlFramebuffer, 3> layerFramebuffers_;
   // Linear blend (rgb, inverse distance; -1 for holes), then the fill's
   // pyramid: pushed_[l] is level l + 1, pulled_[l] is level l filled (at

@@ -101,7 +101,7 @@ void GpuWarper::resize(int width, int height) {
 }
 
 void GpuWarper::drawLayer(const PinholeCamera& camera, const GpuPanorama& reference, int layer, float frameScale,
-                          GpuFrameStatistics& statistics) {
+                          const PixelBox* box, GpuFrameStatistics& statistics) {
   glBindFramebuffer(GL_FRAMEBUFFER, layerFramebuffers_[size_t(layer)].get());
   // 1 / distance -1: uncovered (warpLayerTexel).
   const GLuint uncovered[4] = {0u, 0u, std::bit_cast<GLuint>(-1.0f), 0u};
@@ -130,10 +130,18 @@ void GpuWarper::drawLayer(const PinholeCamera& camera, const GpuPanorama& refere
   glBindTextureUnit(0, reference.colorTexture());
   glBindTextureUnit(1, reference.distanceTexture());
 
-  // Frustum planes through the camera, normals inside: four sides and the near plane.
+  // Frustum planes through the camera, normals inside: four sides (the
+  // frame's, or the box's: the sides at normalized device coordinates
+  // a0 <= a <= a1, b0 <= b <= b1) and the near plane.
   const glm::vec3 f = camera.forward(), r = camera.right(), u = camera.up();
   const float tanY = camera.tanHalfFovY(), tanX = tanY * camera.aspect();
-  const std::array<glm::vec3, 5> normals = {f * tanX - r, f * tanX + r, f * tanY - u, f * tanY + u, f};
+  float a0 = -1.0f, a1 = 1.0f, b0 = -1.0f, b1 = 1.0f;
+  if (box) {
+    a0 = 2.0f * float(box->x0) / float(width_) - 1.0f, a1 = 2.0f * float(box->x1 + 1) / float(width_) - 1.0f;
+    b0 = 2.0f * float(box->y0) / float(height_) - 1.0f, b1 = 2.0f * float(box->y1 + 1) / float(height_) - 1.0f;
+  }
+  const std::array<glm::vec3, 5> normals = {f * (a1 * tanX) - r, r - f * (a0 * tanX), f * (b1 * tanY) - u,
+                                            u - f * (b0 * tanY), f};
   const std::array<float, 5> pointOffsets = {0.0f, 0.0f, 0.0f, 0.0f, kPinholeNearPlane};
   const std::array<float, 5> directionOffsets = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
   std::vector<GLsizei> counts;
@@ -174,19 +182,14 @@ GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<cons
   glDisable(GL_CULL_FACE);
   glDisable(GL_SCISSOR_TEST);
   glBindVertexArray(vertexArray_.get());
-  drawAndResolve(camera, references, settings, false, timePasses, frameScale, statistics);
+  drawAndResolve(camera, references, settings, nullptr, timePasses, frameScale, statistics);
 
   const bool showsReferences = settings.showSources || settings.showTrust;
   if (settings.holesFromNeighbours && !showsReferences && !fallback.empty()) {
     const auto fallbackStart = std::chrono::steady_clock::now();
     if (const std::optional<PixelBox> holes = holeBounds()) {
-      // Only the holes' bounding box is drawn: the layers are cleared and
-      // resolved inside it alone.
-      glEnable(GL_SCISSOR_TEST);
-      glScissor(holes->x0, holes->y0, holes->x1 - holes->x0 + 1, holes->y1 - holes->y0 + 1);
       GpuFrameStatistics extra;
-      drawAndResolve(camera, fallback, settings, true, false, frameScale, extra);
-      glDisable(GL_SCISSOR_TEST);
+      drawAndResolve(camera, fallback, settings, &*holes, false, frameScale, extra);
       statistics.fallbackDrawn = int(fallback.size());
       statistics.tilesDrawn += extra.tilesDrawn;
       statistics.tilesCulled += extra.tilesCulled;
@@ -214,8 +217,15 @@ GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<cons
 }
 
 void GpuWarper::drawAndResolve(const PinholeCamera& camera, std::span<const GpuPanorama* const> references,
-                               const GpuWarpSettings& settings, bool holesOnly, bool timePasses, float frameScale,
+                               const GpuWarpSettings& settings, const PixelBox* holes, bool timePasses, float frameScale,
                                GpuFrameStatistics& statistics) {
+  const bool holesOnly = holes != nullptr;
+  // The holes pass draws inside their box alone: the layers are cleared,
+  // drawn and resolved there, and its tiles culled to that part of the view.
+  if (holes) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(holes->x0, holes->y0, holes->x1 - holes->x0 + 1, holes->y1 - holes->y0 + 1);
+  }
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);
@@ -230,7 +240,7 @@ void GpuWarper::drawAndResolve(const PinholeCamera& camera, std::span<const GpuP
   for (size_t k = 0; k < references.size(); ++k) {
     if (timePasses) glFinish();
     const auto start = std::chrono::steady_clock::now();
-    drawLayer(camera, *references[k], int(k), frameScale, statistics);
+    drawLayer(camera, *references[k], int(k), frameScale, holes, statistics);
     if (timePasses) {
       glFinish();
       statistics.layerMilliseconds[k] = millisecondsSince(start);
@@ -268,6 +278,7 @@ void GpuWarper::drawAndResolve(const PinholeCamera& camera, std::span<const GpuP
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glDisable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
+  glDisable(GL_SCISSOR_TEST);
   if (timePasses) {
     glFinish();
     statistics.resolveMilliseconds = millisecondsSince(resolveStart);

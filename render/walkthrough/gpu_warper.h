@@ -87,20 +87,23 @@ public:
   GLuint outputTexture() const { return output_.get(); }
 
 private:
-  void drawLayer(const PinholeCamera& camera, const GpuPanorama& reference, int layer, float frameScale,
-                 GpuFrameStatistics& statistics);
-  void fillHoles(float epsilon);
-  // Draws the references' layers and resolves them: into every pixel, or
-  // (holesOnly) into the holes the last resolve marked.
-  void drawAndResolve(const PinholeCamera& camera, std::span<const GpuPanorama* const> references,
-                      const GpuWarpSettings& settings, bool holesOnly, bool timePasses, float frameScale,
-                      GpuFrameStatistics& statistics);
-  // The bounding box of the holes the last resolve marked, in pixels
-  // (rows from the bottom, corners included); none without holes. Reads
-  // the mark back: about 4 bytes a pixel, a copy on llvmpipe.
+  // A rectangle of the frame in pixels (rows from the bottom, corners included).
   struct PixelBox {
     int x0, y0, x1, y1;
   };
+  // Draws a reference's layer; within box, if given, only the tiles whose
+  // bounds reach that part of the view.
+  void drawLayer(const PinholeCamera& camera, const GpuPanorama& reference, int layer, float frameScale,
+                 const PixelBox* box, GpuFrameStatistics& statistics);
+  void fillHoles(float epsilon);
+  // Draws the references' layers and resolves them: into every pixel, or
+  // (holes given: their bounding box) into the holes the last resolve
+  // marked, drawing and resolving inside that box alone.
+  void drawAndResolve(const PinholeCamera& camera, std::span<const GpuPanorama* const> references,
+                      const GpuWarpSettings& settings, const PixelBox* holes, bool timePasses, float frameScale,
+                      GpuFrameStatistics& statistics);
+  // The bounding box of the holes the last resolve marked; none without
+  // holes. Reads the mark back: about 4 bytes a pixel, a copy on llvmpipe.
   std::optional<PixelBox> holeBounds();
 
   int width_ = 0, height_ = 0;

@@ -5,6 +5,7 @@
 #include "app/video/video_file.h"
 #include "core/io/atomic_file.h"
 #include "core/io/dataset.h"
+#include "core/selection/reference_selection.h"
 #include "core/selection/selection.h"
 #include "core/selection/selection_inputs.h"
 #include "tests/analytic_scene.h"
@@ -444,8 +445,8 @@ TEST_CASE("help lists what a user needs, and --help-all the options that tune th
   testing::TemporaryDirectory directory;
   const RunResult help = runTriwalk(directory, "decimate --help");
   REQUIRE(help.status == 0);
-  for (const char* everyday : {"--dataset", "--out", "--relative-error", "--target", "--refine-radius", "--error-stride",
-                               "--holes", "--help-all"}) {
+  for (const char* everyday : {"--dataset", "--out", "--preset", "--relative-error", "--target", "--refine-radius",
+                               "--error-stride", "--holes", "--help-all"}) {
     CHECK_MESSAGE(help.out.find(everyday) != std::string::npos, everyday);
   }
   for (const char* expert : {"--priced-samples", "--recosting", "--refine-screen", "--refine-priced", "--one-ring",
@@ -469,6 +470,68 @@ TEST_CASE("help lists what a user needs, and --help-all the options that tune th
 }  // namespace triwalk
 
 namespace triwalk {
+
+TEST_CASE("decimate --preset paper runs the paper's rules, as its options would, and options beside a preset override it") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 4, 3, 64, 1);
+  const std::string dataset = " --dataset " + (directory / "data").string();
+  auto decimate = [&](const std::string& options, const std::string& name) {
+    const RunResult result = runTriwalk(directory, "decimate --quiet" + dataset + " " + options + " --out " +
+                                                       (directory / name).string());
+    INFO(options << ": " << result.err);
+    REQUIRE(result.status == 0);
+    return nlohmann::json::parse(readTextFile(directory / name));
+  };
+  nlohmann::json preset = decimate("--preset paper --target 5", "preset.json");
+  const nlohmann::json& settings = preset["settings"];
+  CHECK(settings["preset"] == "paper");
+  CHECK(settings["cost"] == "centroid");
+  CHECK(settings["fixed_boundary"] == true);
+  CHECK(settings["area_weighted_cost"] == false);
+  CHECK(settings["recosting"] == "eager");
+  CHECK(settings["refine_radius"] == 0.0);
+  CHECK(settings["exchanges"] == 0);
+  CHECK(settings["point_warp"] == true);
+  CHECK(settings["blend_weights"] == "distance");
+  CHECK(settings["holes"] == "black");
+  CHECK(settings["pixel_weighting"] == "uniform");
+  CHECK(settings["destinations"] == "centroid");
+  CHECK(preset["collapses"].size() == 7);  // 12 samples to 5
+
+  // The same run spelled out option by option: the same selection, every collapse included.
+  nlohmann::json spelled = decimate("--target 5 --cost centroid --unweighted-cost --recosting eager --refine-radius 0 "
+                                    "--exchanges 0 --point-warp --blend-weights distance --holes black "
+                                    "--pixel-weighting uniform --triangle-destinations centroid",
+                                    "spelled.json");
+  CHECK(spelled["settings"]["preset"] == "default");
+  spelled["settings"].erase("preset");
+  preset["settings"].erase("preset");
+  CHECK(preset == spelled);
+
+  // Without a stopping option the paper stops at its absolute 1.85; a stopping option replaces it.
+  const nlohmann::json paperThreshold = decimate("--preset paper", "threshold.json");
+  CHECK(paperThreshold["settings"]["max_error"] == kPaperMaxError);
+  CHECK(paperThreshold["settings"]["relative_error"] == 0.0);
+  const nlohmann::json relative = decimate("--preset paper --relative-error 1.5", "relative.json");
+  CHECK(relative["settings"]["relative_error"] == 1.5);
+  const nlohmann::json defaults = decimate("--refine-radius 0", "defaults.json");
+  CHECK(defaults["settings"]["relative_error"] == kDefaultRelativeError);
+
+  // An option beside the preset changes that setting alone.
+  const nlohmann::json served = decimate("--preset paper --cost served-samples --target 5", "served.json");
+  CHECK(served["settings"]["cost"] == "served-samples");
+  CHECK(served["settings"]["point_warp"] == true);
+  CHECK(served["settings"]["pixel_weighting"] == "uniform");
+  CHECK(decimate("--preset fast --target 5 --refine-radius 0", "fast.json")["settings"]["error_stride"] == 2);
+  CHECK(decimate("--preset fast --error-stride 1 --target 5 --refine-radius 0", "exact.json")["settings"]["error_stride"] == 1);
+
+  const RunResult unknown = runTriwalk(directory, "decimate --preset quick" + dataset + " --out " +
+                                                      (directory / "unknown.json").string());
+  CHECK(unknown.status != 0);
+  CHECK(unknown.err.find("--preset") != std::string::npos);
+  CHECK(std::count(unknown.err.begin(), unknown.err.end(), '\n') == 1);
+  CHECK_FALSE(std::filesystem::exists(directory / "unknown.json"));
+}
 
 TEST_CASE("capture --scene builtin-floor:2x1 captures the floor's own region at three samples a metre") {
   testing::TemporaryDirectory directory;

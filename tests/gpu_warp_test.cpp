@@ -523,6 +523,11 @@ TEST_CASE("holes the triangle's references leave are resolved from the neighbour
   }
   CHECK(covered > 0);
   CHECK(changed == 0);
+  // A walking frame (a fraction of each side) skips them: their vertex work
+  // would not shrink with the frame.
+  const WalkthroughRenderer::Frame walking = renderer.render(camera, neighbours, true, false, 0.5f);
+  CHECK(walking.neighbours.size() == 2);
+  CHECK(walking.statistics.fallbackDrawn == 0);
   // A frame without holes draws no extra reference.
   const WalkthroughRenderer::Frame open = renderer.render(SmallBuiltinWalk::camera({3.1f, 2.2f, 1.6f}, 20.0f), neighbours, true);
   if (renderer.warper().countHoles().holesBefore == 0) CHECK(open.statistics.fallbackDrawn == 0);

@@ -62,7 +62,7 @@ BenchDecimation runBenchDecimation(const Dataset& dataset, const BenchSelectionE
   result.loadSeconds = secondsSince(loadStart);
   // What `decimate --max-error 1.85` (the main job) runs: the default
   // cost, boundary and area weights, then the refinement.
-  result.settings.decimation.maxError = 1.85;
+  result.settings.decimation.maxError = kPaperMaxError;
   const rusage before = processUsage();
   result.run = selectReferences(dataset, errors, result.settings, kQuiet);
   const rusage after = processUsage();

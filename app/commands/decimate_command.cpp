@@ -33,7 +33,7 @@ void decimateTiled(const Dataset& dataset, const ResolvedSelection& resolved, in
   if (!worker) std::printf("%s; in tiles\n", describeErrorSettings(resolved.errors).c_str());
   InterruptScope interruptScope;
   const std::filesystem::path folder = std::filesystem::path(out).concat(".tiles");
-  TilePlanRequest request{describeSelectionSettings(resolved.selection, resolved.errors), tiles, jobs};
+  TilePlanRequest request{describeResolvedSelection(resolved), tiles, jobs};
   std::optional<StitchResult> stitched = decimateInTiles(dataset, request, folder, quiet || worker);
   if (!stitched) return;
   writeSelection(out, stitched->selection, dataset);
@@ -93,7 +93,7 @@ void registerDecimateCommand(CLI::App& app) {
     }
     selection.decimation.maxError = run.maxError;
 
-    run.selection.settings = describeSelectionSettings(selection, settings);
+    run.selection.settings = describeSelectionSettings(selection, settings, resolved.preset);
     writeSelection(a.out, run.selection, dataset);
 
     const DecimationStatistics& statistics = run.statistics;

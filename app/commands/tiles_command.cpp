@@ -47,7 +47,7 @@ void registerPlan(CLI::App& tiles) {
     const int count = a.tiles == "auto" ? 0 : tileCountFor(a.tiles, dataset.sampleCount());
     InterruptScope interruptScope;
     const OutputLock lock(a.out);
-    const TilePlanRequest request{describeSelectionSettings(resolved.selection, resolved.errors), count, a.jobs};
+    const TilePlanRequest request{describeResolvedSelection(resolved), count, a.jobs};
     writeTilePlan(a.out, planTiles(dataset, request, a.quiet), dataset);
     const TilePlan plan = readTilePlan(a.out, dataset);
     std::printf("planned %zu tiles of %d samples (margin %.2f m, seam band %.2f m)", plan.tiles.size(),

@@ -1,6 +1,7 @@
 #include "app/setup/decimation_options.h"
 
 #include "app/setup/option_checks.h"
+#include "app/setup/selection_preset.h"
 #include "core/support/errors.h"
 
 #include <cstdio>
@@ -118,10 +119,12 @@ SelectionSettings selectionSettings(const SelectionArguments& arguments, double 
   return settings;
 }
 
-nlohmann::json describeSelectionSettings(const SelectionSettings& settings, const TriangleErrorSettings& errors) {
+nlohmann::json describeSelectionSettings(const SelectionSettings& settings, const TriangleErrorSettings& errors,
+                                         const std::string& preset) {
   const DecimationOptions& options = settings.decimation;
   nlohmann::json description = describeDecimationOptions(options);
-  description.update({{"max_error", options.maxError},
+  description.update({{"preset", preset},
+                      {"max_error", options.maxError},
                       {"relative_error", settings.relativeError},
                       {"target", options.targetSamples},
                       {"refine_radius",
@@ -163,20 +166,28 @@ ResolvedSelection resolveSelection(const SelectionArguments& selection, const Er
   ResolvedSelection resolved;
   resolved.errors = triangleErrorSettings(errors, dataset);
   applyErrorStride(selection, resolved.errors);
-  resolved.selection = selectionSettings(selection, stopping.maxError, stopping.target);
   const bool noGoal = stopping.maxError <= 0.0 && stopping.relativeError <= 0.0 && stopping.target == 0;
-  resolved.selection.relativeError = noGoal ? kDefaultRelativeError : stopping.relativeError;
+  const double presetMaxError = noGoal ? stopping.presetMaxError : 0.0;
+  resolved.selection = selectionSettings(selection, presetMaxError > 0.0 ? presetMaxError : stopping.maxError, stopping.target);
+  resolved.selection.relativeError = noGoal && presetMaxError <= 0.0 ? kDefaultRelativeError : stopping.relativeError;
   return resolved;
 }
 
+nlohmann::json describeResolvedSelection(const ResolvedSelection& resolved) {
+  return describeSelectionSettings(resolved.selection, resolved.errors, resolved.preset);
+}
+
 void addDecimationOptions(CLI::App& command, DecimationArguments& arguments) {
+  addPresetOption(command, arguments);  // first, so that the options given beside it override it
   addStoppingOptions(command, arguments.stopping);
   addSelectionOptions(command, arguments.selection);
   addErrorOptions(command, arguments.errors, withSelectionDefaults(TriangleErrorSettings{}.synthesis));
 }
 
 ResolvedSelection resolveSelection(const DecimationArguments& arguments, const Dataset& dataset) {
-  return resolveSelection(arguments.selection, arguments.errors, arguments.stopping, dataset);
+  ResolvedSelection resolved = resolveSelection(arguments.selection, arguments.errors, arguments.stopping, dataset);
+  resolved.preset = arguments.preset;
+  return resolved;
 }
 
 }  // namespace triwalk

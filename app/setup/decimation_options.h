@@ -40,8 +40,10 @@ struct SelectionArguments {
 
 void addSelectionOptions(CLI::App& command, SelectionArguments& arguments);
 SelectionSettings selectionSettings(const SelectionArguments& arguments, double maxError, int targetSamples);
-// For selection.json: the settings that made it.
-nlohmann::json describeSelectionSettings(const SelectionSettings& settings, const TriangleErrorSettings& errors);
+// For selection.json: the settings that made it, and the preset they
+// started from (informative: every setting is written too).
+nlohmann::json describeSelectionSettings(const SelectionSettings& settings, const TriangleErrorSettings& errors,
+                                         const std::string& preset = "default");
 TriangleErrorSettings triangleErrorSettings(const ErrorArguments& arguments, const Dataset& dataset);
 // The selection's errors on the lattice --error-stride asks for; throws
 // InputError naming it where the settings cannot have one (a hole fill
@@ -54,21 +56,29 @@ std::string describeErrorSettings(const TriangleErrorSettings& settings);
 struct StoppingArguments {
   double maxError = 0.0, relativeError = 0.0;
   int target = 0;
+  // The absolute threshold when none of the three is given (--preset
+  // paper); 0: the relative kDefaultRelativeError.
+  double presetMaxError = 0.0;
 };
 void addStoppingOptions(CLI::App& command, StoppingArguments& arguments);
 
 // Every setting of a decimation, resolved for the data set from the
-// options (the relative threshold kDefaultRelativeError when no stopping
-// rule is given); InputError for a target the data set cannot meet.
+// options (the preset's threshold when no stopping rule is given);
+// InputError for a target the data set cannot meet.
 struct ResolvedSelection {
   TriangleErrorSettings errors;
   SelectionSettings selection;
+  std::string preset = "default";
 };
+// describeSelectionSettings of resolved, with its preset.
+nlohmann::json describeResolvedSelection(const ResolvedSelection& resolved);
 ResolvedSelection resolveSelection(const SelectionArguments& selection, const ErrorArguments& errors,
                                    const StoppingArguments& stopping, const Dataset& dataset);
 
-// Every option of a decimation, as decimate and tiles plan take them.
+// Every option of a decimation, as decimate and tiles plan take them,
+// --preset first (app/setup/selection_preset.h).
 struct DecimationArguments {
+  std::string preset = "default";
   StoppingArguments stopping;
   SelectionArguments selection;
   ErrorArguments errors;

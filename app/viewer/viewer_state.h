@@ -55,7 +55,7 @@ struct ViewerState {
   // dense triangulation's mean error, as decimate's --max-error and
   // --relative-error; the viewer starts them at the selection's threshold.
   bool runRelative = true;
-  float runError = 1.85f;
+  float runError = float(kPaperMaxError);
   float runRelativeError = float(kDefaultRelativeError);
   int runSamples = 21;
   std::string savePath = "selection.json";

@@ -103,8 +103,11 @@ const char* recostingName(bool lazyRecosting);
 // Parses "lazy" or "eager" (true for lazy); throws InputError.
 bool parseLazyRecosting(const std::string& name);
 
+// The paper's absolute error threshold (its Table 1), on its error scale.
+inline constexpr double kPaperMaxError = 1.85;
+
 struct DecimationOptions {
-  double maxError = 1.85;        // no collapse whose error exceeds this; <= 0: no threshold
+  double maxError = kPaperMaxError;  // no collapse whose error exceeds this; <= 0: no threshold
   int targetSamples = 0;         // stop at this many samples; 0: no target
   bool oneRingCandidates = false;
   CollapseCost cost = CollapseCost::ServedSamples;

@@ -185,7 +185,13 @@ GpuFrameStatistics GpuWarper::render(const PinholeCamera& camera, std::span<cons
   drawAndResolve(camera, references, settings, nullptr, timePasses, frameScale, statistics);
 
   const bool showsReferences = settings.showSources || settings.showTrust;
-  if (settings.holesFromNeighbours && !showsReferences && !fallback.empty()) {
+  // Full-size frames only: the extra layers' vertex work does not shrink
+  // with the frame, and in walking frames (drawn at a fraction of each side
+  // to hold the frame budget) it took the viewer's walk on llvmpipe from
+  // 27 to 40 ms median, over the 33 ms budget. A still frame (the walker
+  // stopped, render, screenshots) is full size and gets the neighbours.
+  const bool fullSize = frameScale >= 1.0f;
+  if (settings.holesFromNeighbours && fullSize && !showsReferences && !fallback.empty()) {
     const auto fallbackStart = std::chrono::steady_clock::now();
     if (const std::optional<PixelBox> holes = holeBounds()) {
       GpuFrameStatistics extra;

@@ -40,8 +40,8 @@ struct GpuWarpSettings {
   // How much to trust each pixel (shaders/warp_resolve.frag; holes black, not filled).
   bool showTrust = false;
   // Resolve the holes from the extra references given (render's fallback)
-  // before the fill; not with showSources or showTrust, which show the
-  // triangle's own references.
+  // before the fill, in full-size frames; not with showSources or
+  // showTrust, which show the triangle's own references.
   bool holesFromNeighbours = true;
 
   bool operator==(const GpuWarpSettings&) const = default;

@@ -271,7 +271,8 @@ TEST_CASE("an irregular data set without paths decimates, evaluates against ever
   CHECK(decimate.out.find("distance weights") != std::string::npos);
   CHECK(eval.out.find("reliability weights") != std::string::npos);
   const nlohmann::json written = nlohmann::json::parse(testing::readTextFileOrEmpty(selection));
-  CHECK(written["settings"]["quality"].get<std::string>().find("distance weights") != std::string::npos);
+  CHECK(written["settings"]["blend_weights"] == "distance");
+  CHECK_FALSE(written["settings"].contains("quality"));  // data only, no prose
   const RunResult render = runTriwalk(directory, "render" + data + " --selection " + selection.string() +
                                                      " --frames 2 --size 96x64 --out " + (directory / "frames").string(), true);
   INFO("render: " << render.err);
@@ -330,27 +331,27 @@ TEST_CASE("suite: each count selected with the selection's blend weights and wid
     return row;
   };
   const nlohmann::json byDefault = run("");
-  CHECK(byDefault["settings"]["quality"].get<std::string>().find("distance weights") != std::string::npos);
+  CHECK(byDefault["settings"]["blend_weights"] == "distance");
   const nlohmann::json reliability = run(" --selection-blend-weights reliability");
-  CHECK(reliability["settings"]["quality"].get<std::string>().find("reliability weights") != std::string::npos);
+  CHECK(reliability["settings"]["blend_weights"] == "reliability");
   // The probes and the baselines are the same; only the selection differs.
   CHECK(reliability["probe_errors"]["uniform"] == byDefault["probe_errors"]["uniform"]);
   const Selection written = readSelection(out / "room" / "selection_6.json", Dataset::open(out / "room" / "dataset"));
-  CHECK(written.settings["quality"].get<std::string>().find("reliability weights") != std::string::npos);
+  CHECK(written.settings["blend_weights"] == "reliability");
   // A coarser selection error: the selection says so, the evaluation stays at 64x32.
   const nlohmann::json coarse = run(" --selection-error-width 32");
-  CHECK(coarse["settings"]["quality"].get<std::string>().find("errors at 32x16") != std::string::npos);
+  CHECK(coarse["settings"]["error_width"] == 32);
   CHECK(coarse["probe_errors"]["uniform"] == byDefault["probe_errors"]["uniform"]);
   // The selection warps simplified meshes unless asked for the grid: the
   // selection says which, the evaluation keeps the grid either way.
-  CHECK(byDefault["settings"]["quality"].get<std::string>().find("simplified 0.25 px mesh") != std::string::npos);
+  CHECK(byDefault["settings"]["source_mesh"] == "simplified");
+  CHECK(byDefault["settings"]["mesh_tolerance"] == 0.25);
   const nlohmann::json grid = run(" --selection-source-mesh grid");
-  CHECK(grid["settings"]["quality"].get<std::string>().find("simplified") == std::string::npos);
+  CHECK(grid["settings"]["source_mesh"] == "grid");
   CHECK(grid["probe_errors"]["uniform"] == byDefault["probe_errors"]["uniform"]);
   // Errors on a lattice for the selection alone: it says so, and the
   // evaluation still reads every pixel.
   const nlohmann::json lattice = run(" --error-stride 2");
-  CHECK(lattice["settings"]["quality"].get<std::string>().find("every other row and column") != std::string::npos);
   CHECK(lattice["settings"]["error_stride"].get<int>() == 2);
   CHECK(lattice["probe_errors"]["uniform"] == byDefault["probe_errors"]["uniform"]);
 

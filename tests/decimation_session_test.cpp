@@ -4,6 +4,7 @@
 
 #include "app/viewer/decimation_session.h"
 #include "core/selection/reference_selection.h"
+#include "core/selection/selection_recipe.h"
 #include "tests/analytic_scene.h"
 #include "tests/test_support.h"
 
@@ -70,19 +71,25 @@ TEST_CASE("the viewer's run to a relative error measures the dense mean and stop
   const nlohmann::json saved = session.selection().settings;
   CHECK(saved.at("relative_error").get<double>() == kFactor);
   CHECK(saved.at("max_error").get<double>() == kFactor * decimate.denseMeanError);
+  // One writer of a selection's settings: decimate's recipe, every setting
+  // of the errors and collapses the session ran with, no refinement.
+  const SelectionRecipe recipe = readSelectionRecipe(JsonObject(saved, "saved", "settings"), dataset);
+  CHECK(describeSelectionRecipe(recipe).dump() == saved.dump());
+  CHECK(describeSelectionErrors(recipe.errors) == describeSelectionErrors(errorSettings));
+  CHECK(recipe.selection.refinement.radius == 0.0);
 
   // The same threshold as an absolute error: no further step, from the log.
   session.runToError(kFactor * decimate.denseMeanError);
   CHECK(waitUntilIdle(session).step == int(decimate.collapses));
 
-  // A step back leaves the threshold: saved there, the file names none
-  // (reopened, "run to error" starts at decimate's default), and names it
+  // A step back leaves the threshold: saved there, the file names none (0;
+  // reopened, "run to error" starts at decimate's default), and names it
   // again once the person steps forward to where the run stopped.
   session.stepBack(1);
   CHECK(waitUntilIdle(session).step == int(decimate.collapses) - 1);
   const nlohmann::json steppedBack = session.selection().settings;
-  CHECK_FALSE(steppedBack.contains("max_error"));
-  CHECK_FALSE(steppedBack.contains("relative_error"));
+  CHECK(steppedBack.at("max_error").get<double>() == 0.0);
+  CHECK(steppedBack.at("relative_error").get<double>() == 0.0);
   session.stepForward(1);
   CHECK(waitUntilIdle(session).step == int(decimate.collapses));
   CHECK(session.selection().settings.at("max_error").get<double>() == kFactor * decimate.denseMeanError);

@@ -6,6 +6,7 @@
 #include "core/io/dataset.h"
 #include "core/selection/edge_collapse_decimator.h"
 #include "core/selection/selection.h"
+#include "core/selection/selection_recipe.h"
 #include "core/selection/triangle_error.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
@@ -305,6 +306,73 @@ TEST_CASE("collinear and too few samples are refused with a clear error") {
   CHECK_THROWS_WITH_AS(ViewMesh::delaunay(two, {}, "manifest.json"), doctest::Contains("at least 3 samples"), InputError);
 }
 
+
+TEST_CASE("a selection's recipe round-trips every setting: written, read and written again, byte for byte") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 4, 3, 64, 1);
+  const Dataset dataset = Dataset::open(directory / "data");
+  // Every setting away from its default.
+  SelectionRecipe recipe;
+  recipe.preset = "paper";
+  TriangleErrorSettings& errors = recipe.errors;
+  errors.width = 32;
+  errors.stride = 2;
+  errors.destinations = TriangleDestinations::Quadrature;
+  errors.synthesis.warp.method = WarpMethod::Point;
+  errors.synthesis.warp.stretchTest = StretchTest::DepthRatio;
+  errors.synthesis.warp.grazingAngleDegrees = 7.5f;
+  errors.synthesis.warp.maxDepthRatio = 1.3f;
+  errors.synthesis.warp.mesh = SourceMesh::Simplified;
+  errors.synthesis.warp.meshTolerancePixels = 0.5f;
+  errors.synthesis.blend.epsilon = 0.07f;
+  errors.synthesis.blend.minimumWeightDistance = 0.2f;
+  errors.synthesis.blend.weights = BlendWeights::Distance;
+  errors.synthesis.holes = HoleMode::Mark;
+  errors.error.alpha = 5.0;
+  errors.error.beta = 0.2;
+  errors.error.delta = 10.0;
+  errors.error.weighting = PixelWeighting::Uniform;
+  DecimationOptions& decimation = recipe.selection.decimation;
+  decimation.oneRingCandidates = true;
+  decimation.cost = CollapseCost::Centroid;
+  decimation.fixedBoundary = true;
+  decimation.areaWeightedCost = false;
+  decimation.pricedSamples = 8;
+  decimation.lazyRecosting = false;
+  decimation.maxError = 2.5;
+  decimation.targetSamples = 5;
+  recipe.selection.relativeError = 1.2;
+  RefinementOptions& refinement = recipe.selection.refinement;
+  refinement.radius = 0.3;
+  refinement.maxExchanges = 4;
+  refinement.screenedShare = 0.25;
+  refinement.pricedSamples = 16;
+
+  const nlohmann::json written = describeSelectionRecipe(recipe);
+  const SelectionRecipe read = readSelectionRecipe(JsonObject(written, "selection.json", "settings"), dataset);
+  CHECK(describeSelectionRecipe(read).dump() == written.dump());
+  // Each field differs from the defaults' (so each was carried, not defaulted).
+  const SelectionRecipe defaultRecipe;
+  const nlohmann::json defaults = describeSelectionRecipe(defaultRecipe);
+  CHECK(defaults.size() == written.size());
+  for (const auto& [key, value] : written.items()) {
+    INFO(key);
+    CHECK(value != defaults.at(key));
+  }
+  // And a selection file keeps them: written with the selection, read back, written again.
+  Selection selection;
+  selection.method = "edge_collapse";
+  const Triangle triangle = ViewMesh::delaunay(samplePositions(dataset), {}, "test").triangles().front();
+  selection.samples = {triangle.begin(), triangle.end()};
+  std::sort(selection.samples.begin(), selection.samples.end());
+  selection.triangles = {triangle};
+  selection.settings = written;
+  writeSelection(directory / "a.json", selection, dataset);
+  Selection again = readSelection(directory / "a.json", dataset);
+  again.settings = describeSelectionRecipe(readSelectionRecipe(JsonObject(again.settings, "a.json", "settings"), dataset));
+  writeSelection(directory / "b.json", again, dataset);
+  CHECK(readTextFile(directory / "a.json") == readTextFile(directory / "b.json"));
+}
 
 TEST_CASE("selection.json round trip, and bad selections name the file and the problem") {
   testing::TemporaryDirectory directory;

@@ -27,13 +27,13 @@ std::string tilesHelp() {
 
 // The tiled decimation: its work folder beside the selection file, kept
 // until the selection is written, so a stopped run goes on from its tiles.
-void decimateTiled(const Dataset& dataset, const ResolvedSelection& resolved, int tiles, int jobs,
+void decimateTiled(const Dataset& dataset, const SelectionRecipe& resolved, int tiles, int jobs,
                    const std::string& out, bool quiet) {
   const bool worker = rankFromEnvironment() != 0;  // an MPI rank other than 0 only runs tiles
   if (!worker) std::printf("%s; in tiles\n", describeErrorSettings(resolved.errors).c_str());
   InterruptScope interruptScope;
   const std::filesystem::path folder = std::filesystem::path(out).concat(".tiles");
-  TilePlanRequest request{describeResolvedSelection(resolved), tiles, jobs};
+  TilePlanRequest request{describeSelectionRecipe(resolved), tiles, jobs};
   std::optional<StitchResult> stitched = decimateInTiles(dataset, request, folder, quiet || worker);
   if (!stitched) return;
   writeSelection(out, stitched->selection, dataset);
@@ -74,7 +74,7 @@ void registerDecimateCommand(CLI::App& app) {
   command->callback([arguments] {
     const Arguments& a = *arguments;
     const Dataset dataset = Dataset::open(a.dataset);
-    const ResolvedSelection resolved = resolveSelection(a.decimation, dataset);
+    const SelectionRecipe resolved = resolveSelection(a.decimation, dataset);
     const int tiles = tileCountFor(a.tiles, dataset.sampleCount());
     if (tiles != 1) {
       decimateTiled(dataset, resolved, tiles, a.jobs, a.out, a.quiet);
@@ -85,15 +85,14 @@ void registerDecimateCommand(CLI::App& app) {
 
     InterruptScope interruptScope;
     DatasetTriangleErrors errors(dataset, settings, LoadedViews::Samples, a.quiet);
-    SelectionSettings selection = resolved.selection;
-    SelectionRun run = selectReferences(dataset, errors, selection, a.quiet);
-    if (selection.relativeError > 0.0) {
+    SelectionRun run = selectReferences(dataset, errors, resolved.selection, a.quiet);
+    if (resolved.selection.relativeError > 0.0) {
       std::printf("error threshold: %.2f x the dense triangulation's mean triangle error %.4f = %.4f\n",
-                  selection.relativeError, run.denseMeanError, run.maxError);
+                  resolved.selection.relativeError, run.denseMeanError, run.maxError);
     }
-    selection.decimation.maxError = run.maxError;
-
-    run.selection.settings = describeSelectionSettings(selection, settings, resolved.preset);
+    SelectionRecipe made = resolved;  // with the absolute threshold a relative one meant
+    made.selection.decimation.maxError = run.maxError;
+    run.selection.settings = describeSelectionRecipe(made);
     writeSelection(a.out, run.selection, dataset);
 
     const DecimationStatistics& statistics = run.statistics;

@@ -387,7 +387,7 @@ void registerSuiteCommand(CLI::App& app) {
           const SelectionSettings selectionOptions = selectionSettings(a.selection, 0.0, count);
           if (a.tiles > 1) {
             const auto began = std::chrono::steady_clock::now();
-            const TilePlanRequest request{describeSelectionSettings(selectionOptions, selectionErrorSettings), a.tiles,
+            const TilePlanRequest request{describeSelectionRecipe({selectionErrorSettings, selectionOptions}), a.tiles,
                                           defaultJobs()};
             const std::filesystem::path work = std::filesystem::path(selectionFile).concat(".tiles");
             std::optional<StitchResult> stitched = decimateInTiles(dataset, request, work, a.quiet);
@@ -400,7 +400,7 @@ void registerSuiteCommand(CLI::App& app) {
           }
           if (!selectionErrors) selectionErrors.emplace(dataset, selectionErrorSettings, LoadedViews::Samples, a.quiet);
           SelectionRun run = selectReferences(dataset, *selectionErrors, selectionOptions, a.quiet);
-          run.selection.settings = describeSelectionSettings(selectionOptions, selectionErrorSettings);
+          run.selection.settings = describeSelectionRecipe({selectionErrorSettings, selectionOptions});
           writeSelection(selectionFile, run.selection, dataset);
           selections.push_back(std::move(run.selection));
           selectionSeconds.back() = run.collapseSeconds + run.refinementSeconds;
@@ -435,7 +435,7 @@ void registerSuiteCommand(CLI::App& app) {
             selection.method = method;
             selection.samples = mesh.vertices();
             selection.triangles = mesh.triangles();
-            selection.settings = describeSelectionSettings(selectionOptions, selectionErrorSettings);
+            selection.settings = describeSelectionRecipe({selectionErrorSettings, selectionOptions});
             writeSelection(fileOf(method), selection, dataset);
             return selection;
           };

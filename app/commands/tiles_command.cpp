@@ -41,13 +41,13 @@ void registerPlan(CLI::App& tiles) {
   command->callback([arguments] {
     const Arguments& a = *arguments;
     const Dataset dataset = Dataset::open(a.dataset);
-    const ResolvedSelection resolved = resolveSelection(a.decimation, dataset);
+    const SelectionRecipe resolved = resolveSelection(a.decimation, dataset);
     // auto: tiles within kTileSamples whatever the capture's size (decimate's
     // auto also decides whether to tile at all).
     const int count = a.tiles == "auto" ? 0 : tileCountFor(a.tiles, dataset.sampleCount());
     InterruptScope interruptScope;
     const OutputLock lock(a.out);
-    const TilePlanRequest request{describeResolvedSelection(resolved), count, a.jobs};
+    const TilePlanRequest request{describeSelectionRecipe(resolved), count, a.jobs};
     writeTilePlan(a.out, planTiles(dataset, request, a.quiet), dataset);
     const TilePlan plan = readTilePlan(a.out, dataset);
     std::printf("planned %zu tiles of %d samples (margin %.2f m, seam band %.2f m)", plan.tiles.size(),

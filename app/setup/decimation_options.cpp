@@ -119,25 +119,6 @@ SelectionSettings selectionSettings(const SelectionArguments& arguments, double 
   return settings;
 }
 
-nlohmann::json describeSelectionSettings(const SelectionSettings& settings, const TriangleErrorSettings& errors,
-                                         const std::string& preset) {
-  const DecimationOptions& options = settings.decimation;
-  nlohmann::json description = describeDecimationOptions(options);
-  description.update({{"preset", preset},
-                      {"max_error", options.maxError},
-                      {"relative_error", settings.relativeError},
-                      {"target", options.targetSamples},
-                      {"refine_radius",
-                       settings.refinement.radius ? nlohmann::json(*settings.refinement.radius) : nlohmann::json("auto")},
-                      {"exchanges", settings.refinement.maxExchanges ? nlohmann::json(*settings.refinement.maxExchanges)
-                                                                     : nlohmann::json("auto")},
-                      {"refine_screen", settings.refinement.screenedShare},
-                      {"refine_priced", settings.refinement.pricedSamples},
-                      {"quality", describeErrorSettings(errors)}});
-  description.update(describeSelectionErrors(errors));
-  return description;
-}
-
 void addStoppingOptions(CLI::App& command, StoppingArguments& arguments) {
   CLI::Option* maxError = command.add_option(
       "--max-error", arguments.maxError,
@@ -156,14 +137,14 @@ void addStoppingOptions(CLI::App& command, StoppingArguments& arguments) {
       ->check(nonNegativeNumber());
 }
 
-ResolvedSelection resolveSelection(const SelectionArguments& selection, const ErrorArguments& errors,
-                                   const StoppingArguments& stopping, const Dataset& dataset) {
+SelectionRecipe resolveSelection(const SelectionArguments& selection, const ErrorArguments& errors,
+                                 const StoppingArguments& stopping, const Dataset& dataset) {
   if (stopping.target == 1 || stopping.target == 2) throw InputError("--target", "a triangle needs at least 3 samples");
   if (stopping.target > dataset.sampleCount()) {
     throw InputError("--target", std::to_string(stopping.target) + " is more than the " +
                                      std::to_string(dataset.sampleCount()) + " samples of the data set");
   }
-  ResolvedSelection resolved;
+  SelectionRecipe resolved;
   resolved.errors = triangleErrorSettings(errors, dataset);
   applyErrorStride(selection, resolved.errors);
   const bool noGoal = stopping.maxError <= 0.0 && stopping.relativeError <= 0.0 && stopping.target == 0;
@@ -173,10 +154,6 @@ ResolvedSelection resolveSelection(const SelectionArguments& selection, const Er
   return resolved;
 }
 
-nlohmann::json describeResolvedSelection(const ResolvedSelection& resolved) {
-  return describeSelectionSettings(resolved.selection, resolved.errors, resolved.preset);
-}
-
 void addDecimationOptions(CLI::App& command, DecimationArguments& arguments) {
   addPresetOption(command, arguments);  // first, so that the options given beside it override it
   addStoppingOptions(command, arguments.stopping);
@@ -184,8 +161,8 @@ void addDecimationOptions(CLI::App& command, DecimationArguments& arguments) {
   addErrorOptions(command, arguments.errors, withSelectionDefaults(TriangleErrorSettings{}.synthesis));
 }
 
-ResolvedSelection resolveSelection(const DecimationArguments& arguments, const Dataset& dataset) {
-  ResolvedSelection resolved = resolveSelection(arguments.selection, arguments.errors, arguments.stopping, dataset);
+SelectionRecipe resolveSelection(const DecimationArguments& arguments, const Dataset& dataset) {
+  SelectionRecipe resolved = resolveSelection(arguments.selection, arguments.errors, arguments.stopping, dataset);
   resolved.preset = arguments.preset;
   return resolved;
 }

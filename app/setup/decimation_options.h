@@ -5,6 +5,7 @@
 
 #include "app/setup/quality_options.h"
 #include "core/selection/reference_selection.h"
+#include "core/selection/selection_recipe.h"
 #include "core/selection/triangle_error.h"
 
 #include <CLI/CLI.hpp>
@@ -40,10 +41,6 @@ struct SelectionArguments {
 
 void addSelectionOptions(CLI::App& command, SelectionArguments& arguments);
 SelectionSettings selectionSettings(const SelectionArguments& arguments, double maxError, int targetSamples);
-// For selection.json: the settings that made it, and the preset they
-// started from (informative: every setting is written too).
-nlohmann::json describeSelectionSettings(const SelectionSettings& settings, const TriangleErrorSettings& errors,
-                                         const std::string& preset = "default");
 TriangleErrorSettings triangleErrorSettings(const ErrorArguments& arguments, const Dataset& dataset);
 // The selection's errors on the lattice --error-stride asks for; throws
 // InputError naming it where the settings cannot have one (a hole fill
@@ -65,15 +62,8 @@ void addStoppingOptions(CLI::App& command, StoppingArguments& arguments);
 // Every setting of a decimation, resolved for the data set from the
 // options (the preset's threshold when no stopping rule is given);
 // InputError for a target the data set cannot meet.
-struct ResolvedSelection {
-  TriangleErrorSettings errors;
-  SelectionSettings selection;
-  std::string preset = "default";
-};
-// describeSelectionSettings of resolved, with its preset.
-nlohmann::json describeResolvedSelection(const ResolvedSelection& resolved);
-ResolvedSelection resolveSelection(const SelectionArguments& selection, const ErrorArguments& errors,
-                                   const StoppingArguments& stopping, const Dataset& dataset);
+SelectionRecipe resolveSelection(const SelectionArguments& selection, const ErrorArguments& errors,
+                                 const StoppingArguments& stopping, const Dataset& dataset);
 
 // Every option of a decimation, as decimate and tiles plan take them,
 // --preset first (app/setup/selection_preset.h).
@@ -84,6 +74,6 @@ struct DecimationArguments {
   ErrorArguments errors;
 };
 void addDecimationOptions(CLI::App& command, DecimationArguments& arguments);
-ResolvedSelection resolveSelection(const DecimationArguments& arguments, const Dataset& dataset);
+SelectionRecipe resolveSelection(const DecimationArguments& arguments, const Dataset& dataset);
 
 }  // namespace triwalk

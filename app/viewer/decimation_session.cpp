@@ -3,6 +3,7 @@
 #include "core/image/color.h"
 #include "core/io/png_io.h"
 #include "core/selection/reference_selection.h"
+#include "core/selection/selection_recipe.h"
 #include "core/selection/tiled_selection.h"
 #include "core/support/progress.h"
 
@@ -17,20 +18,31 @@ namespace triwalk {
 
 namespace {
 
-// A saved selection's settings: the collapse options and the errors the
+// A saved selection's recipe: the errors and the collapse options the
 // viewer's decimation ran with, which it goes on with when the file is
-// opened again.
-nlohmann::json savedSettings(const DecimationOptions& options, const TriangleErrorSettings& settings) {
-  nlohmann::json saved = describeDecimationOptions(options);
-  saved.update(describeSelectionErrors(settings));
-  return saved;
+// opened again; no threshold (the steps are the person's, a reached one is
+// added when saved), no refinement (the viewer does not refine), and the
+// preset of the selection it opened.
+nlohmann::json savedSettings(const DecimationOptions& options, const TriangleErrorSettings& settings,
+                             const std::optional<Selection>& opened) {
+  SelectionRecipe recipe;
+  recipe.errors = settings;
+  recipe.selection.decimation = options;
+  recipe.selection.decimation.maxError = 0.0;
+  recipe.selection.decimation.targetSamples = 0;
+  recipe.selection.refinement.radius = 0.0;
+  if (opened && opened->settings.is_object()) {
+    const auto preset = opened->settings.find("preset");
+    if (preset != opened->settings.end() && preset->is_string()) recipe.preset = preset->get<std::string>();
+  }
+  return describeSelectionRecipe(recipe);
 }
 
 }  // namespace
 
 DecimationSession::DecimationSession(const Dataset& dataset, const TriangleErrorSettings& settings, DecimationOptions options,
                                      const std::optional<Selection>& selection)
-    : dataset_(dataset), settings_(settings), options_(options), savedSettings_(savedSettings(options, settings)) {
+    : dataset_(dataset), settings_(settings), options_(options), savedSettings_(savedSettings(options, settings, selection)) {
   // Single steps go as far as the person asks; runs set their own limit.
   options_.maxError = 0.0;
   options_.targetSamples = 0;

@@ -128,6 +128,16 @@ std::optional<TriangleErrorSettings> readSelectionErrors(const JsonObject& setti
   return errors;
 }
 
+double readThreshold(const JsonObject& settings, const std::string& key, OptionRange range) {
+  const double value = settings.has(key) ? settings.number(key) : 0.0;
+  if (value != 0.0 && !range.contains(value)) {
+    std::ostringstream problem;
+    problem << key << " must be 0 (none) or from " << range.lowest << " to " << range.highest << ", not " << value;
+    settings.fail(problem.str());
+  }
+  return value;
+}
+
 RefinementOptions readRefinementOptions(const JsonObject& settings) {
   RefinementOptions options;
   if (settings.has("refine_radius") && !settings.json().at("refine_radius").is_string()) {
@@ -289,17 +299,8 @@ Selection readSelection(const std::filesystem::path& path, const Dataset& datase
     const JsonObject settings = root.object("settings");
     selection.settings = settings.json();
     selection.errors = readSelectionErrors(settings, dataset);
-    auto threshold = [&](const std::string& key, OptionRange range) {
-      const double value = settings.has(key) ? settings.number(key) : 0.0;
-      if (value != 0.0 && !range.contains(value)) {
-        std::ostringstream problem;
-        problem << key << " must be 0 (none) or from " << range.lowest << " to " << range.highest << ", not " << value;
-        settings.fail(problem.str());
-      }
-      return value;
-    };
-    selection.maxError = threshold("max_error", kMaxErrorRange);
-    selection.relativeError = threshold("relative_error", kRelativeErrorRange);
+    selection.maxError = readThreshold(settings, "max_error", kMaxErrorRange);
+    selection.relativeError = readThreshold(settings, "relative_error", kRelativeErrorRange);
     if (settings.has("cost")) selection.decimation = readDecimationOptions(settings);
   }
   const nlohmann::json& samples = root.array("samples");

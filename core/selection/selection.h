@@ -88,6 +88,9 @@ nlohmann::json describeSelectionErrors(const TriangleErrorSettings& errors);
 DecimationOptions readDecimationOptions(const JsonObject& settings);
 std::optional<TriangleErrorSettings> readSelectionErrors(const JsonObject& settings, const Dataset& dataset);
 RefinementOptions readRefinementOptions(const JsonObject& settings);
+// A threshold (max_error, relative_error): 0 (none, also when missing) or
+// within range.
+double readThreshold(const JsonObject& settings, const std::string& key, OptionRange range);
 
 // Writes atomically.
 void writeSelection(const std::filesystem::path& path, const Selection& selection, const Dataset& dataset);

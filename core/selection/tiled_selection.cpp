@@ -1,6 +1,7 @@
 #include "core/selection/tiled_selection.h"
 
 #include "core/selection/reference_selection.h"
+#include "core/selection/selection_recipe.h"
 #include "core/selection/selection_refinement.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
@@ -42,21 +43,15 @@ namespace {
 // the probes, the whole margin +1.0% +- 2.1%.
 constexpr double kMarginRadii = 4.0, kBandRadii = 4.0;
 
-struct TileSettings {
-  TriangleErrorSettings errors;
-  SelectionSettings selection;
-};
-
-TileSettings tileSettings(const TilePlan& plan, const Dataset& dataset) {
-  const JsonObject settings(plan.settings, "tile plan", "settings");
-  TileSettings resolved;
-  const std::optional<TriangleErrorSettings> errors = readSelectionErrors(settings, dataset);
-  if (!errors) settings.fail("names no error settings");
-  resolved.errors = *errors;
-  resolved.selection.decimation = readDecimationOptions(settings);
-  resolved.selection.decimation.maxError = settings.numberOr("max_error", 0.0);
-  resolved.selection.refinement = readRefinementOptions(settings);
-  return resolved;
+// What a tile decimates with: the plan's recipe, to its absolute
+// threshold (a relative one was measured on the whole capture when the
+// plan was made) and, with a target, to the tile's share of it (set by
+// the caller from the plan).
+SelectionRecipe tileSettings(const TilePlan& plan, const Dataset& dataset) {
+  SelectionRecipe recipe = readSelectionRecipe(JsonObject(plan.settings, "tile plan", "settings"), dataset);
+  recipe.selection.relativeError = 0.0;
+  recipe.selection.decimation.targetSamples = 0;
+  return recipe;
 }
 
 std::vector<double> restricted(const std::vector<double>& values, std::span<const int> indices) {
@@ -142,7 +137,7 @@ TilePlan planTiles(const Dataset& dataset, const TilePlanRequest& request, bool 
 
   const double relative = settings.numberOr("relative_error", 0.0);
   if (relative > 0.0) {
-    const TileSettings resolved = tileSettings(plan, dataset);
+    const SelectionRecipe resolved = tileSettings(plan, dataset);
     std::vector<std::pair<double, size_t>> sums(plan.tiles.size());
     ProgressReporter progress("dense triangle errors, by tiles", plan.tiles.size(), quiet);
     tbb::task_arena arena(std::max(1, request.jobs));
@@ -169,7 +164,7 @@ TileOutcome runTile(const Dataset& dataset, const TilePlan& plan, int k, size_t 
   TRIWALK_CHECK(k >= 0 && size_t(k) < plan.tiles.size(), "no such tile");
   const auto start = std::chrono::steady_clock::now();
   const Tile& tile = plan.tiles[size_t(k)];
-  TileSettings settings = tileSettings(plan, dataset);
+  SelectionRecipe settings = tileSettings(plan, dataset);
   settings.errors.layerCacheBytes = layerCacheBytes;
   SelectionSettings& selection = settings.selection;
   if (plan.target > 0) selection.decimation.targetSamples = plan.tileTargets[size_t(k)];
@@ -217,7 +212,7 @@ struct SeamStep {
 // collapse and move, everything else is frozen. It reads the references of
 // the tile's samples only and changes those of its band only, which is
 // what lets steps of tiles that do not reach each other run at once.
-SeamStep runSeamStep(const Dataset& dataset, const TilePlan& plan, const TileSettings& settings,
+SeamStep runSeamStep(const Dataset& dataset, const TilePlan& plan, const SelectionRecipe& settings,
                      const std::vector<double>& weights, const WalkableRegion& region, size_t k,
                      std::span<const int> band, const std::vector<char>& isReference, int removals) {
   const Tile& tile = plan.tiles[k];
@@ -325,8 +320,8 @@ StitchResult stitchTiles(const Dataset& dataset, const TilePlan& plan, const std
   StitchResult result;
   result.unionSamples = size_t(std::count(isReference.begin(), isReference.end(), 1));
 
-  const TileSettings settings = [&] {
-    TileSettings resolved = tileSettings(plan, dataset);
+  const SelectionRecipe settings = [&] {
+    SelectionRecipe resolved = tileSettings(plan, dataset);
     resolved.errors.layerCacheBytes = tileLayerCacheBytes(std::max(1, jobs));
     return resolved;
   }();

@@ -36,7 +36,7 @@ struct TilePlan {
   std::string key;
   std::string datasetDirectory;  // absolute
   int datasetSamples = 0;
-  // The selection file's settings (describeSelectionSettings), with the
+  // The selection file's settings (describeSelectionRecipe), with the
   // refinement radius and the absolute threshold resolved for the whole
   // capture: a relative threshold is measured against the whole capture's
   // dense mean (the tiles' own means would disagree).
@@ -57,7 +57,7 @@ struct TileOutcome {
 };
 
 struct TilePlanRequest {
-  nlohmann::json settings;  // describeSelectionSettings of the request (max_error, relative_error, target)
+  nlohmann::json settings;  // describeSelectionRecipe of the request (max_error, relative_error, target)
   int tiles = 0;            // 0: as many as keep every tile within kTileSamples
   int jobs = 1;             // tiles measured at once
 };

@@ -14,10 +14,10 @@ struct DecimationArguments;
 // The presets, by the name --preset takes:
 //   default  triwalk's measured best (docs/DESIGN.md);
 //   paper    the paper's own rules, to reproduce its Table 1: the centroid
-//            collapse cost, unweighted, the hull kept, no refinement, the
-//            point warp, inverse-distance weights, raw holes, uniform pixel
-//            weights, and its absolute threshold 1.85 when no stopping
-//            option is given;
+//            collapse cost, unweighted, the hull kept, no refinement,
+//            inverse-distance weights, raw holes, uniform pixel weights,
+//            and its absolute threshold 1.85 when no stopping option is
+//            given (the warp stays the mesh warp: selection_preset.cpp);
 //   fast     the selection's errors on every other row and column of the
 //            error panorama (--error-stride 2), measured cheaper.
 // Registers --preset on command. Added before the options it sets: CLI11

@@ -8,8 +8,8 @@ namespace triwalk {
 namespace {
 
 // The paper's rules (docs/DESIGN.md, "Departures from the paper"), as far
-// as triwalk has them: its blend interval stays relative to the nearest
-// distance (an absolute one is not implemented), its errors are measured
+// as triwalk has them: the blend interval stays triwalk's, relative to the
+// nearest distance (the only interval triwalk has), the errors are measured
 // at the error width, and the warp stays the mesh warp: the literal point
 // warp is not the paper's splats and leaves cracks at every magnification,
 // so its errors are not on the paper's scale (on the main job no collapse

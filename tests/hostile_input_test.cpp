@@ -254,6 +254,67 @@ TEST_CASE("render replaces its output folder as a whole: no frame of an earlier 
   CHECK(testing::countEntries(directory / "mine", "") == 1);
 }
 
+TEST_CASE("a file output is replaced only when it is absent, empty or this kind's own: another command's file or a user's is refused") {
+  testing::TemporaryDirectory directory;
+  testing::writeAnalyticDataset(directory / "data", 3, 3, 64, 4);
+  const std::string data = " --dataset " + (directory / "data").string();
+  const std::string decimate = "decimate --quiet --target 4 --refine-radius 0" + data + " --out ";
+  const std::filesystem::path manifest = directory / "data" / "manifest.json", notes = directory / "notes.json",
+                              selection = directory / "s.json", empty = directory / "empty.json";
+  std::ofstream(notes) << R"({"mine": true})";
+  std::ofstream(empty).flush();
+  const std::string manifestBefore = testing::readTextFileOrEmpty(manifest);
+
+  // A data set's manifest and a user's JSON are refused by the selection's writer, before any work, untouched.
+  for (const std::filesystem::path& foreign : {manifest, notes}) {
+    const std::string before = testing::readTextFileOrEmpty(foreign);
+    const RunResult refused = runTriwalk(directory, decimate + foreign.string());
+    INFO("stderr: " << refused.err);
+    CHECK(isOneLineError(refused));
+    CHECK(refused.err.find(foreign.string() + " exists and is not a triwalk selection; refusing to overwrite it") !=
+          std::string::npos);
+    CHECK(testing::readTextFileOrEmpty(foreign) == before);
+  }
+  CHECK(testing::readTextFileOrEmpty(manifest) == manifestBefore);
+
+  // Its own earlier output and an empty file are replaced.
+  REQUIRE(runTriwalk(directory, decimate + selection.string()).status == 0);
+  REQUIRE(runTriwalk(directory, "decimate --quiet --target 5 --refine-radius 0" + data + " --out " + selection.string()).status == 0);
+  CHECK(nlohmann::json::parse(testing::readTextFileOrEmpty(selection))["samples"].size() == 5);
+  REQUIRE(runTriwalk(directory, decimate + empty.string()).status == 0);
+  CHECK(nlohmann::json::parse(testing::readTextFileOrEmpty(empty))["format"] == "triwalk-selection");
+
+  // The other file outputs: each refuses the selection, which is not its kind.
+  const std::string selectionBefore = testing::readTextFileOrEmpty(selection);
+  const std::vector<std::pair<std::string, std::string>> others = {
+      {"eval --quiet" + data + " --selection " + selection.string() + " --json " + selection.string(),
+       "not a triwalk evaluation (eval --json)"},
+      {"render --size 32x24 --frames 1" + data + " --out " + (directory / "frames").string() + " --stats " + selection.string(),
+       "not triwalk render statistics (render --stats)"},
+      {"region" + data + " --out " + selection.string(), "not a PNG image"},
+      {"render --size 32x24 --frames 1" + data + " --video " + selection.string(), "not a video (MP4, MOV or Matroska)"},
+  };
+  for (const auto& [command, problem] : others) {
+    const RunResult refused = runTriwalk(directory, command, true);
+    INFO(command << "\nstderr: " << refused.err);
+    CHECK(isOneLineError(refused));
+    CHECK(refused.err.find(selection.string() + " exists and is " + problem + "; refusing to overwrite it") != std::string::npos);
+    CHECK(testing::readTextFileOrEmpty(selection) == selectionBefore);
+  }
+  CHECK_FALSE(std::filesystem::exists(directory / "frames"));
+
+  // eval's own JSON is its to replace, and it says what it is.
+  const std::string eval = "eval --quiet" + data + " --selection " + selection.string() + " --json " + (directory / "e.json").string();
+  REQUIRE(runTriwalk(directory, eval).status == 0);
+  REQUIRE(runTriwalk(directory, eval).status == 0);
+  CHECK(nlohmann::json::parse(testing::readTextFileOrEmpty(directory / "e.json"))["format"] == "triwalk-evaluation");
+  // So is one written before evaluations carried their format.
+  const std::filesystem::path earlier = directory / "table1.json";
+  std::ofstream(earlier) << R"({"dataset": "d", "not_built": {}, "rows": []})";
+  REQUIRE(runTriwalk(directory, "eval --quiet" + data + " --selection " + selection.string() + " --json " + earlier.string()).status == 0);
+  CHECK(nlohmann::json::parse(testing::readTextFileOrEmpty(earlier))["rows"].size() > 2);
+}
+
 TEST_CASE("a second writer of the same output is refused in one line while the first finishes whole") {
   testing::TemporaryDirectory directory;
   const std::filesystem::path capture = directory / "cap", status = directory / "status.txt";

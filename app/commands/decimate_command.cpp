@@ -63,7 +63,7 @@ void registerDecimateCommand(CLI::App& app) {
   auto arguments = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand("decimate", "Select reference samples by edge-collapse decimation");
   command->add_option("--dataset", arguments->dataset, "Data set directory")->required();
-  command->add_option("--out", arguments->out, "Selection file to write (selection.json)")->required()->check(writableFile());
+  command->add_option("--out", arguments->out, "Selection file to write (selection.json)")->required()->check(writableFile(OutputKind::Selection));
   command->add_option("--tiles", arguments->tiles, tilesHelp())->capture_default_str()->check(tileCount());
   command->add_option("--jobs", arguments->jobs,
                       "Tiles decimated at once on this machine (default: the cores); under mpirun, one per rank")

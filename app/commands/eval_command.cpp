@@ -155,7 +155,7 @@ void registerEvalCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("eval", "Table 1: edge collapse against the dense set and the baselines");
   command->add_option("--dataset", arguments->dataset, "Data set directory")->required();
   command->add_option("--selection", arguments->selection, "Edge-collapse selection (from decimate)")->required();
-  command->add_option("--json", arguments->json, "Also write the rows as JSON")->check(writableFile());
+  command->add_option("--json", arguments->json, "Also write the rows as JSON")->check(writableFile(OutputKind::Evaluation));
   command->add_option("--heatmaps", arguments->heatmaps, "Directory for per-probe error heatmap PNGs")->check(writableDirectory());
   command->add_option("--baselines-out", arguments->baselinesOut,
                       "Also write each baseline at the selection's count as a selection file DIR/METHOD.json, for "
@@ -175,6 +175,14 @@ void registerEvalCommand(CLI::App& app) {
     const Selection selection = readSelection(a.selection, dataset);
     if (dataset.probeCount() == 0) throw InputError(dataset.manifestPath().string(), "eval needs probes (capture --probes N, or import --probes-fraction F)");
     checkCounts(dataset, selection, a.counts);
+    if (!a.baselinesOut.empty()) {
+      std::vector<std::string> written = geometricBaselines();
+      written.insert(written.end(), {"greedy_insertion", "insertion_refined"});
+      for (const std::string& method : written) {
+        const std::string problem = foreignOutputProblem(std::filesystem::path(a.baselinesOut) / (method + ".json"), OutputKind::Selection);
+        if (!problem.empty()) throw InputError("--baselines-out", problem);
+      }
+    }
     const TriangleErrorSettings settings = triangleErrorSettings(a.errors, dataset);
     InterruptScope interruptScope;
     // A capture larger than a tile is judged tile by tile, never holding
@@ -298,7 +306,8 @@ void registerEvalCommand(CLI::App& app) {
     if (!a.counts.empty()) compareAtCounts(dataset, selection, a.counts, baselines, *errors);
 
     if (!a.json.empty()) {
-      nlohmann::json document = {{"dataset", a.dataset},
+      nlohmann::json document = {{"format", outputFormat(OutputKind::Evaluation)},
+                                 {"dataset", a.dataset},
                                  {"settings", describeErrorSettings(settings)},
                                  {"rows", nlohmann::json::array()},
                                  {"not_built", nlohmann::json::object()}};

@@ -22,7 +22,7 @@ void registerRegionCommand(CLI::App& app) {
   command->add_option("--dataset", arguments->dataset, "Data set directory")->required();
   command->add_option("--selection", arguments->selection, "selection.json whose triangles to draw (default: the dense ones)")
       ->check(CLI::ExistingFile);
-  command->add_option("--out", arguments->out, "Output PNG")->required()->check(writableFile());
+  command->add_option("--out", arguments->out, "Output PNG")->required()->check(writableFile(OutputKind::Png));
   command->add_option("--size", arguments->size, "Pixels along the longer side")->capture_default_str()->check(CLI::Range(64, 8192));
   command->callback([arguments] {
     const Arguments& a = *arguments;

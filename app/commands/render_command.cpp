@@ -151,8 +151,8 @@ void registerRenderCommand(CLI::App& app) {
     // as a whole; elsewhere their folder must exist.
     const std::optional<std::filesystem::path> statsInOut = pathInside(a.stats, a.out);
     const std::optional<std::filesystem::path> videoInOut = pathInside(a.video, a.out);
-    if (!a.stats.empty() && !statsInOut) checkWritableFile(a.stats, "--stats");
-    if (!a.video.empty() && !videoInOut) checkWritableFile(a.video, "--video");
+    if (!a.stats.empty() && !statsInOut) checkWritableFile(a.stats, "--stats", OutputKind::RenderStatistics);
+    if (!a.video.empty() && !videoInOut) checkWritableFile(a.video, "--video", OutputKind::Video);
     if (a.out.empty() && (a.compare || a.truth)) {
       throw InputError("--out", "--compare and --truth write their images beside the frames: give --out DIR");
     }
@@ -220,7 +220,8 @@ void registerRenderCommand(CLI::App& app) {
     if (videoInOut) std::filesystem::create_directories(videoPath.parent_path());
     if (!a.video.empty()) video.emplace(videoPath, width, height, a.fps);
     std::map<int, std::unique_ptr<WarpSource>> cpuSources;
-    nlohmann::json statistics = {{"holes", holeModeName(synthesis.holes)},
+    nlohmann::json statistics = {{"format", outputFormat(OutputKind::RenderStatistics)},
+                                 {"holes", holeModeName(synthesis.holes)},
                                  {"blend_weights", blendWeightsName(synthesis.blend.weights)},
                                  {"frames", nlohmann::json::array()}};
     double psnrSum = 0.0, worstPsnr = INFINITY;

@@ -98,7 +98,7 @@ void registerStitch(CLI::App& tiles) {
   auto arguments = std::make_shared<Arguments>();
   CLI::App* command = tiles.add_subcommand("stitch", "Stitch the tiles of a plan into one selection file");
   command->add_option("--plan", arguments->plan, "Work folder of tiles plan")->required();
-  command->add_option("--out", arguments->out, "Selection file to write (selection.json)")->required()->check(writableFile());
+  command->add_option("--out", arguments->out, "Selection file to write (selection.json)")->required()->check(writableFile(OutputKind::Selection));
   command->add_option("--jobs", arguments->jobs, "Seam steps run at once (default: the cores; the selection is the same)")
       ->check(CLI::Range(1, 4096));
   command->add_flag("--quiet", arguments->quiet, "No progress output");

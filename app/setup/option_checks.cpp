@@ -93,23 +93,23 @@ CLI::Validator errorStride() { return CLI::IsMember({1, 2, 4}); }
 namespace {
 
 // What is wrong with writing this file, or nothing.
-std::string writableFileProblem(const std::string& text) {
+std::string writableFileProblem(const std::string& text, OutputKind kind) {
   const std::filesystem::path path(text);
   std::error_code error;
   if (text.empty()) return "empty file name";
   if (std::filesystem::is_directory(path, error)) return text + " is a folder, not a file";
   if (!isWritableDirectory(folderOf(path))) return "cannot write " + text + ": no writable folder " + folderOf(path).string();
-  return {};
+  return foreignOutputProblem(path, kind);
 }
 
 }  // namespace
 
-CLI::Validator writableFile() {
-  return CLI::Validator([](std::string& text) { return writableFileProblem(text); }, "FILE");
+CLI::Validator writableFile(OutputKind kind) {
+  return CLI::Validator([kind](std::string& text) { return writableFileProblem(text, kind); }, "FILE");
 }
 
-void checkWritableFile(const std::string& file, const std::string& option) {
-  if (const std::string problem = writableFileProblem(file); !problem.empty()) throw InputError(option, problem);
+void checkWritableFile(const std::string& file, const std::string& option, OutputKind kind) {
+  if (const std::string problem = writableFileProblem(file, kind); !problem.empty()) throw InputError(option, problem);
 }
 
 std::optional<std::filesystem::path> pathInside(const std::string& file, const std::string& folder) {

@@ -2,6 +2,7 @@
 // Checks that run while the command line is parsed, so a bad option fails
 // in one line before any data is loaded or any work starts.
 
+#include "core/io/replaceable_output.h"
 #include "core/support/input_limits.h"
 #include "core/support/option_range.h"
 
@@ -24,11 +25,13 @@ CLI::Validator coordinate();
 // The lattices --error-stride offers (decimate, suite, view, bench): every
 // pixel, every other row and column, every fourth.
 CLI::Validator errorStride();
-// An output file: its folder exists and is writable, and it is not a folder.
-CLI::Validator writableFile();
+// An output file: its folder exists and is writable, it is not a folder,
+// and it is absent, empty or an earlier output of this kind (another
+// command's output or a user's file is never overwritten).
+CLI::Validator writableFile(OutputKind kind);
 // The same, said by the command itself (a side output may lie inside the
 // command's output folder, which does not exist yet): InputError naming the option.
-void checkWritableFile(const std::string& file, const std::string& option);
+void checkWritableFile(const std::string& file, const std::string& option, OutputKind kind);
 // file's path inside folder when it lies in it (written lexically: "a/b"
 // in "a"), else nothing.
 std::optional<std::filesystem::path> pathInside(const std::string& file, const std::string& folder);

@@ -46,14 +46,14 @@ void registerViewCommand(CLI::App& app) {
                       "last one shows and the decimation's (at most 300 s, said if it gives up), write --screenshot "
                       "and exit: the same arguments give the same screenshot")
       ->check(CLI::PositiveNumber);
-  command->add_option("--screenshot", arguments->screenshot, "With --frames: PNG of the window at the last frame")->check(writableFile());
+  command->add_option("--screenshot", arguments->screenshot, "With --frames: PNG of the window at the last frame")->check(writableFile(OutputKind::Png));
   command->add_option("--path", arguments->path,
                       "Camera path to play at start, in real time and smoothly: a walk recorded here (R) at its own "
                       "speed, a path of one pose a frame at 30 poses a second (render --path reads the same files)");
   command->add_option("--record", arguments->record,
                       "Record the walk from the start (R ends it) into this camera path file, also when the viewer "
                       "closes")
-      ->check(writableFile());
+      ->check(writableFile(OutputKind::CameraPath));
   command->add_option("--overlay", arguments->overlay,
                       "Colour the view at start by: trust (how many references agree on each pixel, and how well they "
                       "saw it), error (standing near a captured sample or held-out probe, the per-pixel error against its "

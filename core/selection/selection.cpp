@@ -1,6 +1,7 @@
 #include "core/selection/selection.h"
 
 #include "core/io/json_fields.h"
+#include "core/io/replaceable_output.h"
 #include "core/support/errors.h"
 #include "core/support/input_limits.h"
 
@@ -251,7 +252,7 @@ void writeSelection(const std::filesystem::path& path, const Selection& selectio
     if (c.kind != PlacementKind::Relocation) entry["second"] = dataset.sample(c.second).id;
     collapses.push_back(std::move(entry));
   }
-  nlohmann::json document = {{"format", "triwalk-selection"},
+  nlohmann::json document = {{"format", outputFormat(OutputKind::Selection)},
                              {"version", kSelectionFormatVersion},
                              {"method", selection.method},
                              {"dataset",
@@ -274,7 +275,7 @@ Selection readSelection(const std::filesystem::path& path, const Dataset& datase
   const nlohmann::json document = readJsonFile(path);
   const std::string file = path.string();
   const JsonObject root(document, file);
-  if (root.stringOr("format", "") != "triwalk-selection") root.fail("not a triwalk selection (format field)");
+  if (root.stringOr("format", "") != outputFormat(OutputKind::Selection)) root.fail("not a triwalk selection (format field)");
   const int version = root.integer("version");
   if (version != kSelectionFormatVersion) {
     root.fail("unknown selection version " + std::to_string(version) + " (this triwalk reads version " +

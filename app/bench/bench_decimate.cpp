@@ -51,10 +51,9 @@ std::string BenchSelectionErrors::describe() const { return describeErrorPanoram
 BenchDecimation runBenchDecimation(const Dataset& dataset, const BenchSelectionErrors& errorChoice) {
   BenchDecimation result;
   result.peakIsOwn = resetPeakResident();
-  TriangleErrorSettings settings;
+  TriangleErrorSettings settings = selectionErrorDefaults(dataset);  // as decimate prices collapses
   settings.width = errorChoice.width;
   settings.stride = errorChoice.stride;
-  settings.synthesis = withSelectionDefaults(settings.synthesis);  // as decimate prices collapses
   const auto loadStart = BenchClock::now();
   // Progress on stderr (minutes of work); the table goes to stdout.
   constexpr bool kQuiet = false;

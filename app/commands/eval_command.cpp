@@ -33,8 +33,7 @@ void writeHeatmaps(const std::filesystem::path& directory, const MethodEvaluatio
   const Dataset& dataset = errors.dataset();
   for (int p = 0; p < dataset.probeCount(); ++p) {
     const Triangle& triangle = mesh.triangles()[size_t(evaluation.probeTriangles[size_t(p)])];
-    ScalarImage perPixel;
-    errors.errorAt(triangle, dataset.probe(p).position, errors.probeDisplay(p), &perPixel);
+    const ScalarImage perPixel = errors.reconstruct(triangle, dataset.probe(p).position, errors.probeDisplay(p)).perPixel;
     writePng(directory / (evaluation.method + "_p" + std::to_string(dataset.probe(p).id) + ".png"),
              withColourBar(heatmapImage(perPixel, 0.25f), 0.25f, "per-pixel RMS colour difference to the probe"));
   }

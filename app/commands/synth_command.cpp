@@ -13,6 +13,7 @@
 #include "core/io/staged_directory.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
+#include "core/synthesis/judged_reconstruction.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -24,13 +25,8 @@ namespace triwalk {
 
 namespace {
 
-struct Reconstruction {
-  SynthesizedView view;
-  ReconstructionError error;
-  ScalarImage perPixel;
-};
-
-Reconstruction reconstruct(const Dataset& dataset, const std::vector<int>& references, glm::vec3 at, int width,
+// The view from references at `at`, judged against truth when there is one.
+JudgedReconstruction reconstruct(const Dataset& dataset, const std::vector<int>& references, glm::vec3 at, int width,
                            const Panorama* truth, const SynthesisOptions& synthesis, const ErrorOptions& errorOptions) {
   std::vector<std::unique_ptr<WarpSource>> sources;
   std::vector<const WarpSource*> pointers;
@@ -42,13 +38,12 @@ Reconstruction reconstruct(const Dataset& dataset, const std::vector<int>& refer
     pointers.push_back(sources.back().get());
   }
   const int destinationWidth = sources.front()->width();
-  Reconstruction result;
+  if (truth) {
+    return reconstructAndJudge(pointers, at, destinationWidth, toDisplayColors(truth->color), synthesis, errorOptions);
+  }
+  JudgedReconstruction result;
   result.view = synthesizeView(pointers, DestinationCamera::panorama(at, destinationWidth, destinationWidth / 2),
                                synthesis);
-  if (truth) {
-    result.error = reconstructionError(toDisplayColors(result.view.blended.color), result.view.blended.hole,
-                                       toDisplayColors(truth->color), errorOptions, &result.perPixel);
-  }
   return result;
 }
 
@@ -81,9 +76,9 @@ void probeStudy(const Dataset& dataset, int width, const SynthesisOptions& synth
     throwIfInterrupted();
     const ViewRecord& probe = dataset.probe(p);
     const Panorama truth = dataset.loadView(probe, width);
-    const Reconstruction one =
+    const JudgedReconstruction one =
         reconstruct(dataset, nearestSamples(dataset, probe.position, 1), probe.position, width, &truth, synthesis, errorOptions);
-    const Reconstruction three =
+    const JudgedReconstruction three =
         reconstruct(dataset, nearestSamples(dataset, probe.position, 3), probe.position, width, &truth, synthesis, errorOptions);
     std::printf("| p%d | (%.2f, %.2f) | %.3f | %.3f | %.4f | %.4f | %.2f | %.2f |\n", probe.id, probe.position.x,
                 probe.position.y, one.error.total, three.error.total, one.error.rms, three.error.rms,
@@ -157,7 +152,7 @@ void registerSynthCommand(CLI::App& app) {
     auto write = [&](const std::string& name, const Rgb8Image& image) {
       staging->writeFile(name, [&](const std::filesystem::path& path) { writePng(path, image); });
     };
-    const Reconstruction result = reconstruct(dataset, references, at, a.width, truth.get(), synthesis, errors);
+    const JudgedReconstruction result = reconstruct(dataset, references, at, a.width, truth.get(), synthesis, errors);
     const BlendedView& blended = result.view.blended;
     const double pixels = double(blended.hole.size());
     std::printf("reconstructed %dx%d at (%.3f, %.3f, %.3f) from %zu references; holes %.3f%% of pixels before "

@@ -343,15 +343,13 @@ DecimationSession::Inspection DecimationSession::reconstruct(const Triangle& tri
   inspection.probe = probe;
   const glm::vec3 position = (probe ? dataset_.probe(destination) : dataset_.sample(destination)).position;
   const ColorImage& display = probe ? errors_->probeDisplay(destination) : errors_->sampleDisplay(destination);
-  const SynthesizedView view = errors_->synthesize(triangle, position);
-  ScalarImage perPixel;
-  inspection.error =
-      reconstructionError(toDisplayColors(view.blended.color), view.blended.hole, display, settings_.error, &perPixel);
-  inspection.reconstruction = displayImage(view.blended, HoleMode::Mark);
-  Rgb8Image truth(perPixel.width, perPixel.height);
+  const JudgedReconstruction judged = errors_->reconstruct(triangle, position, display);
+  inspection.error = judged.error;
+  inspection.reconstruction = displayImage(judged.view.blended, HoleMode::Mark);
+  Rgb8Image truth(judged.perPixel.width, judged.perPixel.height);
   for (size_t i = 0; i < truth.pixelCount(); ++i) truth.pixels[i] = toBytes(display.pixels[i]);
   inspection.truth = std::move(truth);
-  inspection.heatmap = heatmapImage(perPixel, kInspectionHeatmapScale);
+  inspection.heatmap = heatmapImage(judged.perPixel, kInspectionHeatmapScale);
   return inspection;
 }
 

@@ -74,13 +74,11 @@ glm::vec3 startPosition(const ViewMesh& mesh, float eye) {
 // sees.
 TriangleErrorSettings liveErrorSettings(const ViewerOptions& options, const Dataset& dataset,
                                         const std::optional<Selection>& selection) {
-  TriangleErrorSettings settings;
+  TriangleErrorSettings settings = selectionErrorDefaults(dataset);
   if (selection && selection->errors) {
     settings = *selection->errors;
   } else {
-    settings.width = errorWidthFor(dataset, 0);
-    settings.stride = kSelectionErrorStride;
-    settings.synthesis = withSelectionDefaults(options.synthesis);
+    settings.synthesis = withSelectionDefaults(options.synthesis);  // the viewer's warp and blend constants
   }
   if (options.errorWidth > 0) settings.width = errorWidthFor(dataset, options.errorWidth);
   if (options.errorStride > 0) settings.stride = options.errorStride;

@@ -85,9 +85,7 @@ std::optional<TriangleErrorSettings> readSelectionErrors(const JsonObject& setti
   if (std::none_of(keys.items().begin(), keys.items().end(), [&](const auto& key) { return settings.has(key.key()); })) {
     return std::nullopt;
   }
-  TriangleErrorSettings errors;
-  errors.synthesis = withSelectionDefaults(errors.synthesis);
-  errors.width = errorWidthFor(dataset, 0);
+  TriangleErrorSettings errors = selectionErrorDefaults(dataset);
   if (settings.has("error_width")) {
     errors.width = settings.integer("error_width");
     if (errors.width <= 0 || dataset.largestWidthAtMost(errors.width) != errors.width) {

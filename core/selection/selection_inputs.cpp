@@ -5,8 +5,8 @@
 namespace triwalk {
 
 SelectionInputKeeper::SelectionInputKeeper(const std::filesystem::path& datasetDirectory, glm::ivec2 fullSize)
-    : errorWidth_(largestWidthAtMost(fullSize, kDefaultErrorWidth)),
-      warp_(withSelectionDefaults(SynthesisOptions{}).warp),
+    : errorWidth_(selectionErrorDefaults(fullSize).width),
+      warp_(selectionErrorDefaults(fullSize).synthesis.warp),
       panoramas_(datasetDirectory, fullSize),
       meshes_(datasetDirectory) {}
 

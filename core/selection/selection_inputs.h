@@ -24,9 +24,9 @@ public:
   // of fullSize.
   SelectionInputKeeper(const std::filesystem::path& datasetDirectory, glm::ivec2 fullSize);
 
-  // Keeps view's copy at the default error width (errorWidthFor) and, for a
-  // sample, its simplified mesh with the selection's default warp options
-  // (withSelectionDefaults); full is the panorama just written as view's
+  // Keeps view's copy at the default error width and, for a sample, its
+  // simplified mesh with the selection's default warp options
+  // (selectionErrorDefaults); full is the panorama just written as view's
   // file. Thread-safe.
   void keep(const ViewRecord& view, bool isSample, const Panorama& full);
 

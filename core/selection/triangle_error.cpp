@@ -86,6 +86,18 @@ SynthesisOptions withSelectionDefaults(SynthesisOptions synthesis) {
   return synthesis;
 }
 
+TriangleErrorSettings selectionErrorDefaults(glm::ivec2 panoramaSize) {
+  TriangleErrorSettings settings;
+  settings.width = largestWidthAtMost(panoramaSize, kDefaultErrorWidth);
+  settings.stride = kSelectionErrorStride;
+  settings.synthesis = withSelectionDefaults(settings.synthesis);
+  return settings;
+}
+
+TriangleErrorSettings selectionErrorDefaults(const Dataset& dataset) {
+  return selectionErrorDefaults(glm::ivec2(dataset.manifest().width, dataset.manifest().height));
+}
+
 TriangleDestinations parseTriangleDestinations(const std::string& name) {
   if (name == "centroid") return TriangleDestinations::Centroid;
   if (name == "quadrature") return TriangleDestinations::Quadrature;
@@ -162,17 +174,11 @@ std::vector<std::pair<int, double>> triangleDestinations(std::span<const glm::dv
   return destinations;
 }
 
-SynthesizedView DatasetTriangleErrors::synthesize(std::span<const int> references, glm::vec3 position) const {
+JudgedReconstruction DatasetTriangleErrors::reconstruct(std::span<const int> references, glm::vec3 position,
+                                                        const ColorImage& truthDisplay, PerPixelError perPixel) const {
   std::vector<const WarpSource*> sources;
   for (int reference : references) sources.push_back(sources_[size_t(reference)].get());
-  const int width = settings_.width;
-  return synthesizeView(sources, DestinationCamera::panorama(position, width, width / 2), settings_.synthesis);
-}
-
-ReconstructionError DatasetTriangleErrors::errorAt(std::span<const int> references, glm::vec3 position,
-                                                   const ColorImage& truthDisplay, ScalarImage* perPixel) const {
-  const SynthesizedView view = synthesize(references, position);
-  return reconstructionError(toDisplayColors(view.blended.color), view.blended.hole, truthDisplay, settings_.error,
+  return reconstructAndJudge(sources, position, settings_.width, truthDisplay, settings_.synthesis, settings_.error,
                              perPixel);
 }
 

@@ -11,6 +11,7 @@
 
 #include "core/geometry/planar_geometry.h"
 #include "core/io/dataset.h"
+#include "core/synthesis/judged_reconstruction.h"
 #include "core/synthesis/reconstruction_error.h"
 #include "core/synthesis/view_synthesis.h"
 #include "core/synthesis/warp_layer_cache.h"
@@ -126,6 +127,16 @@ struct TriangleErrorSettings {
   ErrorOptions error;
 };
 
+// The errors a selection is made with when nothing says otherwise, for
+// panoramas of panoramaSize: the widest error width not above
+// kDefaultErrorWidth that divides it, kSelectionErrorStride, and
+// withSelectionDefaults over TriangleErrorSettings' own. A selection
+// file's missing fields, the viewer's live decimation without a selection
+// file, the stores capture and import keep, and bench decimate start from
+// it; decimate's options default to the same values.
+TriangleErrorSettings selectionErrorDefaults(glm::ivec2 panoramaSize);
+TriangleErrorSettings selectionErrorDefaults(const Dataset& dataset);
+
 // Throws InputError naming the stride (strideName: the option, or a
 // selection file's field) unless settings.stride is a power of two dividing
 // the error panorama's height, and 1 with the hole fill (which needs every
@@ -168,11 +179,14 @@ public:
     return triangleDestinations(positions_, triangle, settings_.destinations);
   }
 
-  // Reconstruction of an arbitrary position from reference samples,
-  // compared with a panorama's display colors.
-  ReconstructionError errorAt(std::span<const int> references, glm::vec3 position, const ColorImage& truthDisplay,
-                              ScalarImage* perPixel = nullptr) const;
-  SynthesizedView synthesize(std::span<const int> references, glm::vec3 position) const;
+  // Reconstruction of an arbitrary position from reference samples at the
+  // error width, judged against a panorama's display colors (every pixel,
+  // whatever the stride).
+  JudgedReconstruction reconstruct(std::span<const int> references, glm::vec3 position, const ColorImage& truthDisplay,
+                                   PerPixelError perPixel = PerPixelError::Kept) const;
+  ReconstructionError errorAt(std::span<const int> references, glm::vec3 position, const ColorImage& truthDisplay) const {
+    return reconstruct(references, position, truthDisplay, PerPixelError::Skipped).error;
+  }
 
   const Dataset& dataset() const { return dataset_; }
   const TriangleErrorSettings& settings() const { return settings_; }

@@ -396,7 +396,7 @@ TEST_CASE("bad captures give one line naming the file, before any image is conve
     const std::filesystem::path in = freshCapture();
     CaptureImportOptions options;
     options.probesFraction = 0.5;
-    testing::requireInputError([&] { importQuietly(scan(CaptureLayout::Folder, in), out, options); }, "--probes-fraction",
+    testing::requireInputError([&] { importQuietly(scan(CaptureLayout::Folder, in), out, options); }, "probes_fraction",
                                "at least 3");
   }
   SUBCASE("an output folder that is not a data set") {

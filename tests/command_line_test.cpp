@@ -425,6 +425,9 @@ TEST_CASE("import and export from the command line: a round trip, its report, an
            {"import --from realsee --in " + exported.string() + " --out x --depth-scale -1", "--depth-scale"},
            {"import --from realsee --in " + exported.string() + " --out x --depth-scale nan", "--depth-scale"},
            {"import --from realsee --in " + exported.string() + " --out x --probes-fraction 1.5", "--probes-fraction"},
+           // The core names its setting (probes_fraction); the command line says the flag.
+           {"import --from realsee --in " + exported.string() + " --out x --probes-fraction 0.8",
+            "--probes-fraction: 10 views leave 2 samples; at least 3 are needed"},
            {"import --from realsee --in " + exported.string() + " --out x --up w", "--up"},
            {"import --from pano3d --in " + exported.string() + " --out x", "no pose file"},
            {"export --dataset " + (directory / "data").string() + " --to realsee --out " + exported.string(), "not empty"},

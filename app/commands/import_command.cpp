@@ -69,7 +69,8 @@ void registerImportCommand(CLI::App& app) {
     announceReplacedDataset(a.out, "import");
     const nlohmann::json provenance = {{"layout", a.from}, {"source", in.string()}, {"matrix", a.matrix}};
     const std::string scene = (in.has_filename() ? in.filename() : in.parent_path().filename()).string();
-    const CaptureImportReport report = importCapture(views, a.options, scene, provenance, a.out);
+    const CaptureImportReport report = namingOption(
+        "probes_fraction", "--probes-fraction", [&] { return importCapture(views, a.options, scene, provenance, a.out); });
 
     std::printf("imported %d samples and %d probes of %dx%d from %s (%s layout) into %s in %.1f s\n", report.samples,
                 report.probes, report.width, report.height, in.c_str(), a.from.c_str(), a.out.c_str(), report.seconds);

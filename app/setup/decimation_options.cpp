@@ -24,7 +24,7 @@ void addErrorOptions(CLI::App& command, ErrorArguments& arguments, const Synthes
 
 TriangleErrorSettings triangleErrorSettings(const ErrorArguments& arguments, const Dataset& dataset) {
   TriangleErrorSettings settings;
-  settings.width = errorWidthFor(dataset, arguments.width);
+  settings.width = namingOption("error_width", "--error-width", [&] { return errorWidthFor(dataset, arguments.width); });
   settings.destinations = parseTriangleDestinations(arguments.destinations);
   settings.synthesis = synthesisOptions(arguments.quality);
   settings.error = errorOptions(arguments.quality);
@@ -33,7 +33,7 @@ TriangleErrorSettings triangleErrorSettings(const ErrorArguments& arguments, con
 
 void applyErrorStride(const SelectionArguments& arguments, TriangleErrorSettings& settings) {
   settings.stride = arguments.errorStride;
-  checkErrorStride(settings);
+  checkErrorStride(settings, "--error-stride", "--holes");
 }
 
 std::string describeErrorSettings(const TriangleErrorSettings& settings) {

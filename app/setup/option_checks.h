@@ -3,6 +3,7 @@
 // in one line before any data is loaded or any work starts.
 
 #include "core/io/replaceable_output.h"
+#include "core/support/errors.h"
 #include "core/support/input_limits.h"
 #include "core/support/option_range.h"
 
@@ -40,6 +41,19 @@ std::optional<std::filesystem::path> pathInside(const std::string& file, const s
 CLI::Validator writableDirectory();
 // --tiles: auto, off or a number of tiles (parseTileCount).
 CLI::Validator tileCount();
+
+// Runs work; an InputError it throws about a setting of the core (named as
+// in a selection file, "error_width") is said about the option that sets
+// it ("--error-width"): the core names settings, the command line its flags.
+template <class Work>
+auto namingOption(const std::string& setting, const std::string& option, Work&& work) {
+  try {
+    return work();
+  } catch (const InputError& error) {
+    if (error.subject() != setting) throw;
+    throw InputError(option, error.problem());
+  }
+}
 
 // Hides the options that tune the method rather than use it (warp, blend
 // and error constants, the decimator's alternative rules) from --help;

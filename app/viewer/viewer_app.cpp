@@ -5,6 +5,7 @@
 #include "app/viewer/viewer_app.h"
 
 #include "app/setup/decimation_options.h"
+#include "app/setup/option_checks.h"
 #include "app/setup/walkthrough_setup.h"
 #include "app/viewer/path_video_export.h"
 #include "app/viewer/sidebar.h"
@@ -80,7 +81,9 @@ TriangleErrorSettings liveErrorSettings(const ViewerOptions& options, const Data
   } else {
     settings.synthesis = withSelectionDefaults(options.synthesis);  // the viewer's warp and blend constants
   }
-  if (options.errorWidth > 0) settings.width = errorWidthFor(dataset, options.errorWidth);
+  if (options.errorWidth > 0) {
+    settings.width = namingOption("error_width", "--error-width", [&] { return errorWidthFor(dataset, options.errorWidth); });
+  }
   if (options.errorStride > 0) settings.stride = options.errorStride;
   // The live errors' holes are the selection's: the viewer's --holes is the walker's.
   checkErrorStride(settings, "--error-stride", "a selection made with --holes");

@@ -133,7 +133,7 @@ CaptureImportReport importCapture(const std::vector<SourceView>& views, const Ca
 
   const int probeCount = int(std::lround(options.probesFraction * double(views.size())));
   if (int(views.size()) - probeCount < 3) {
-    throw InputError("--probes-fraction", std::to_string(views.size()) + " views leave " +
+    throw InputError("probes_fraction", std::to_string(views.size()) + " views leave " +
                                               std::to_string(int(views.size()) - probeCount) + " samples; at least 3 are needed");
   }
   std::vector<bool> isProbe(views.size(), false);

@@ -57,14 +57,14 @@ const char* collapseCostName(CollapseCost cost) {
 CollapseCost parseCollapseCost(const std::string& name) {
   if (name == "served-samples") return CollapseCost::ServedSamples;
   if (name == "centroid") return CollapseCost::Centroid;
-  throw InputError("--cost", "unknown cost '" + name + "' (use served-samples or centroid)");
+  throw InputError("cost", "unknown cost '" + name + "' (use served-samples or centroid)");
 }
 
 const char* recostingName(bool lazyRecosting) { return lazyRecosting ? "lazy" : "eager"; }
 
 bool parseLazyRecosting(const std::string& name) {
   if (name == "lazy" || name == "eager") return name == "lazy";
-  throw InputError("--recosting", "unknown recosting '" + name + "' (use lazy or eager)");
+  throw InputError("recosting", "unknown recosting '" + name + "' (use lazy or eager)");
 }
 
 const char* stopReasonName(StopReason reason) {

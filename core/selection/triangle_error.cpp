@@ -18,7 +18,7 @@ namespace triwalk {
 
 int errorWidthFor(const Dataset& dataset, int requested) {
   const int width = requested > 0 ? requested : dataset.largestWidthAtMost(kDefaultErrorWidth);
-  dataset.downsamplingFactor(width, "--error-width");
+  dataset.downsamplingFactor(width, "error_width");
   return width;
 }
 
@@ -42,7 +42,7 @@ void checkErrorStride(const TriangleErrorSettings& settings, const std::string& 
 DatasetTriangleErrors::DatasetTriangleErrors(const Dataset& dataset, const TriangleErrorSettings& settings,
                                              LoadedViews views, bool quiet)
     : dataset_(dataset), settings_(settings), layerCache_(settings.layerCacheBytes.value_or(0)) {
-  dataset.downsamplingFactor(settings.width, "--error-width");
+  dataset.downsamplingFactor(settings.width, "error_width");
   checkErrorStride(settings);
   const int samples = dataset.sampleCount();
   const int probes = views == LoadedViews::SamplesAndProbes ? dataset.probeCount() : 0;
@@ -102,7 +102,7 @@ TriangleDestinations parseTriangleDestinations(const std::string& name) {
   if (name == "centroid") return TriangleDestinations::Centroid;
   if (name == "quadrature") return TriangleDestinations::Quadrature;
   if (name == "interior") return TriangleDestinations::Interior;
-  throw InputError("--triangle-destinations", "unknown choice '" + name + "' (use centroid, quadrature or interior)");
+  throw InputError("destinations", "unknown choice '" + name + "' (use centroid, quadrature or interior)");
 }
 
 const char* triangleDestinationsName(TriangleDestinations destinations) {

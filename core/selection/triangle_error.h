@@ -67,7 +67,7 @@ const char* triangleDestinationsName(TriangleDestinations destinations);
 // that divides the data set's (Dataset::largestWidthAtMost).
 inline constexpr int kDefaultErrorWidth = 256;
 // The error width for a request: `requested` if given (> 0), else that
-// default; throws InputError naming --error-width if it does not divide the
+// default; throws InputError naming the setting error_width if it does not divide the
 // data set's width.
 int errorWidthFor(const Dataset& dataset, int requested);
 
@@ -141,8 +141,8 @@ TriangleErrorSettings selectionErrorDefaults(const Dataset& dataset);
 // selection file's field) unless settings.stride is a power of two dividing
 // the error panorama's height, and 1 with the hole fill (which needs every
 // pixel; holesName says where the holes are chosen).
-void checkErrorStride(const TriangleErrorSettings& settings, const std::string& strideName = "--error-stride",
-                      const std::string& holesName = "--holes");
+void checkErrorStride(const TriangleErrorSettings& settings, const std::string& strideName = "error_stride",
+                      const std::string& holesName = "holes");
 
 // Which views DatasetTriangleErrors loads: a selection reads only the
 // samples; the probes are held out for judging one (eval, the suite's

@@ -10,7 +10,7 @@ namespace triwalk {
 BlendWeights parseBlendWeights(const std::string& name) {
   if (name == "reliability") return BlendWeights::Reliability;
   if (name == "distance") return BlendWeights::Distance;
-  throw InputError("--blend-weights", "unknown blend weights '" + name + "' (use reliability or distance)");
+  throw InputError("blend_weights", "unknown blend weights '" + name + "' (use reliability or distance)");
 }
 
 const char* blendWeightsName(BlendWeights weights) {

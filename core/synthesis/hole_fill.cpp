@@ -11,11 +11,11 @@
 
 namespace triwalk {
 
-HoleMode parseHoleMode(const std::string& name, const std::string& option) {
+HoleMode parseHoleMode(const std::string& name) {
   if (name == "fill") return HoleMode::Fill;
   if (name == "mark") return HoleMode::Mark;
   if (name == "black") return HoleMode::Black;
-  throw InputError(option, "unknown hole mode '" + name + "' (use fill, mark or black)");
+  throw InputError("holes", "unknown hole mode '" + name + "' (use fill, mark or black)");
 }
 
 const char* holeModeName(HoleMode mode) {

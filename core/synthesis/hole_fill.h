@@ -30,8 +30,9 @@ enum class HoleMode {
   Black,  // black, as the paper shows them
 };
 
-// Parses "fill", "mark", "black"; throws InputError naming option.
-HoleMode parseHoleMode(const std::string& name, const std::string& option = "--holes");
+// Parses "fill", "mark", "black"; throws InputError naming the setting
+// ("holes"; the command line says which option set it).
+HoleMode parseHoleMode(const std::string& name);
 const char* holeModeName(HoleMode mode);
 
 // The display colour of a pixel left a hole: magenta to mark, else black.

@@ -11,7 +11,7 @@ namespace triwalk {
 PixelWeighting parsePixelWeighting(const std::string& name) {
   if (name == "solid-angle") return PixelWeighting::SolidAngle;
   if (name == "uniform") return PixelWeighting::Uniform;
-  throw InputError("--pixel-weighting", "unknown weighting '" + name + "' (use solid-angle or uniform)");
+  throw InputError("pixel_weighting", "unknown weighting '" + name + "' (use solid-angle or uniform)");
 }
 
 const char* pixelWeightingName(PixelWeighting weighting) {

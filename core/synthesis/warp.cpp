@@ -23,7 +23,7 @@ StretchTest parseStretchTest(const std::string& name) {
   if (name == "none") return StretchTest::None;
   if (name == "grazing-angle") return StretchTest::GrazingAngle;
   if (name == "depth-ratio") return StretchTest::DepthRatio;
-  throw InputError("--stretch-test", "unknown stretch test '" + name + "' (use grazing-angle, depth-ratio or none)");
+  throw InputError("stretch_test", "unknown stretch test '" + name + "' (use grazing-angle, depth-ratio or none)");
 }
 
 const char* stretchTestName(StretchTest test) {
@@ -38,7 +38,7 @@ const char* stretchTestName(StretchTest test) {
 SourceMesh parseSourceMesh(const std::string& name) {
   if (name == "grid") return SourceMesh::Grid;
   if (name == "simplified") return SourceMesh::Simplified;
-  throw InputError("--source-mesh", "unknown source mesh '" + name + "' (use simplified or grid)");
+  throw InputError("source_mesh", "unknown source mesh '" + name + "' (use simplified or grid)");
 }
 
 const char* sourceMeshName(SourceMesh mesh) { return mesh == SourceMesh::Grid ? "grid" : "simplified"; }

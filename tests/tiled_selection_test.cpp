@@ -149,6 +149,35 @@ TEST_CASE("seam rounds: tiles whose steps do not reach each other share a round,
   for (int colour = 0; colour < 4; ++colour) CHECK(std::count(grid.begin(), grid.end(), colour) == 4);
 }
 
+TEST_CASE("a target counted over some samples: the decimation stops when those reach it, whatever the others hold") {
+  const std::vector<glm::dvec2> positions = testing::unitGrid(8, 6);
+  std::vector<int> everything(positions.size());
+  for (size_t i = 0; i < everything.size(); ++i) everything[i] = int(i);
+  const ViewMesh dense = ViewMesh::delaunay(positions, everything, "test");
+  std::vector<char> core(positions.size(), 0);
+  for (size_t i = 0; i < positions.size(); ++i) core[i] = positions[i].x < 3.5 ? 1 : 0;  // the left half, 24 samples
+
+  auto decimate = [&](const std::vector<char>& counted) {
+    NearestReferenceErrors errors(positions);
+    DecimationOptions options;
+    options.maxError = 0.0;
+    options.targetSamples = 8;
+    options.counted = counted;
+    EdgeCollapseDecimator decimator(dense, DecimationErrors{nullptr, &errors}, options);
+    CHECK(decimator.run() == StopReason::TargetReached);
+    return decimator.mesh();
+  };
+  auto inCore = [&](const ViewMesh& mesh) {
+    return std::count_if(mesh.vertices().begin(), mesh.vertices().end(), [&](int v) { return core[size_t(v)] != 0; });
+  };
+  const ViewMesh whole = decimate({});
+  CHECK(whole.vertexCount() == 8);
+  CHECK(inCore(whole) < 8);  // counted over everything, the core keeps only its part of the 8
+  const ViewMesh counted = decimate(core);
+  CHECK(inCore(counted) == 8);  // counted over the core, the core keeps 8
+  CHECK(counted.vertexCount() > 8);
+}
+
 TEST_CASE("frozen samples: collapses never remove a frozen reference, and refinement never moves one or takes a frozen sample") {
   const std::vector<glm::dvec2> positions = testing::unitGrid(8, 6);
   std::vector<int> everything(positions.size());

@@ -88,11 +88,17 @@ EdgeCollapseDecimator::EdgeCollapseDecimator(const ViewMesh& mesh, DecimationErr
   TRIWALK_CHECK(options.sampleWeights.empty() || options.sampleWeights.size() == mesh.positions().size(),
                 "one weight per sample");
   TRIWALK_CHECK(options.frozen.empty() || options.frozen.size() == mesh.positions().size(), "one frozen flag per sample");
+  TRIWALK_CHECK(options.counted.empty() || options.counted.size() == mesh.positions().size(), "one counted flag per sample");
   for (size_t t = 0; t < triangles_.size(); ++t) {
     for (int v : triangles_[t]) incident_[size_t(v)].push_back(int(t));
   }
   for (int v : mesh.vertices()) isVertex_[size_t(v)] = 1;
   vertexCount_ = mesh.vertexCount();
+  countedCount_ = vertexCount_;
+  if (!options_.counted.empty()) {
+    countedCount_ = int(std::count_if(mesh.vertices().begin(), mesh.vertices().end(),
+                                      [&](int v) { return options_.counted[size_t(v)] != 0; }));
+  }
   if (region_ && !region_->convex()) sight_.assign(positions_.size() * positions_.size(), -1);
   if (options_.cost == CollapseCost::ServedSamples) serveInitialSamples(mesh, costing);
   std::set<Edge> edges;
@@ -947,6 +953,12 @@ void EdgeCollapseDecimator::apply(const Edge& edge, const EdgeState& state) {
   isVertex_[size_t(a)] = isVertex_[size_t(b)] = 0;
   isVertex_[size_t(plan.placement)] = 1;
   vertexCount_ -= 1;
+  if (options_.counted.empty()) {
+    countedCount_ -= 1;
+  } else {
+    countedCount_ += int(options_.counted[size_t(plan.placement)]) - int(options_.counted[size_t(a)]) -
+                     int(options_.counted[size_t(b)]);
+  }
   for (auto it = edges_.begin(); it != edges_.end();) {
     it = (it->first.first == a || it->first.second == a || it->first.first == b || it->first.second == b) ? edges_.erase(it)
                                                                                                          : std::next(it);
@@ -990,7 +1002,7 @@ void EdgeCollapseDecimator::apply(const Edge& edge, const EdgeState& state) {
 }
 
 bool EdgeCollapseDecimator::step() {
-  if (options_.targetSamples > 0 && vertexCount_ <= options_.targetSamples) {
+  if (options_.targetSamples > 0 && countedCount_ <= options_.targetSamples) {
     stopReason_ = StopReason::TargetReached;
     return false;
   }
@@ -1033,7 +1045,7 @@ double EdgeCollapseDecimator::lowestRefusedError() const {
 
 size_t EdgeCollapseDecimator::expectedRemainingCollapses() const {
   const int floorCount = std::max(3, options_.targetSamples);
-  size_t remaining = size_t(std::max(0, vertexCount_ - floorCount));
+  size_t remaining = size_t(std::max(0, countedCount_ - floorCount));
   const size_t window = 32;
   if (options_.maxError > 0.0 && log_.size() > window) {
     const double rise = log_.back().error - log_[log_.size() - 1 - window].error;

@@ -132,6 +132,11 @@ struct DecimationOptions {
   // a frozen free sample never becomes a reference. A tiled selection's
   // seam pass freezes everything but the band along a tile's border.
   std::vector<char> frozen = {};
+  // By sample index (empty: every sample): only these count toward
+  // targetSamples. A tile counts its core's references, the ones it keeps:
+  // counted over the whole tile, the references its margin held (dropped
+  // when the tiles are stitched) left the cores short of the target.
+  std::vector<char> counted = {};
 };
 
 // Where the costs come from: triangle errors for the centroid cost,
@@ -310,6 +315,7 @@ private:
   std::vector<std::vector<int>> incident_;  // alive triangles of each sample
   std::vector<char> isVertex_;
   int vertexCount_ = 0;
+  int countedCount_ = 0;  // vertices that count toward targetSamples (DecimationOptions::counted)
   DecimationErrors errors_;
   DecimationOptions options_;
   std::unordered_map<uint64_t, double> cache_;  // triangle errors by tripleKey

@@ -37,6 +37,34 @@ private:
   const std::vector<glm::dvec2>& positions_;
 };
 
+// Every sample of positions triangulated.
+ViewMesh denseMesh(const std::vector<glm::dvec2>& positions) {
+  std::vector<int> everything(positions.size());
+  for (size_t i = 0; i < everything.size(); ++i) everything[i] = int(i);
+  return ViewMesh::delaunay(positions, everything, "test");
+}
+
+// 1 for the samples left of x = 3.5.
+std::vector<char> leftHalf(const std::vector<glm::dvec2>& positions) {
+  std::vector<char> mask(positions.size(), 0);
+  for (size_t i = 0; i < positions.size(); ++i) mask[i] = positions[i].x < 3.5 ? 1 : 0;
+  return mask;
+}
+
+struct Decimated {
+  ViewMesh mesh;
+  StopReason stop;
+};
+
+// dense decimated by NearestReferenceErrors to the options' target, with no error threshold.
+Decimated decimateToTarget(const ViewMesh& dense, const std::vector<glm::dvec2>& positions, DecimationOptions options) {
+  NearestReferenceErrors errors(positions);
+  options.maxError = 0.0;
+  EdgeCollapseDecimator decimator(dense, DecimationErrors{nullptr, &errors}, options);
+  const StopReason stop = decimator.run();
+  return {decimator.mesh(), stop};
+}
+
 }  // namespace
 
 TEST_CASE("cores: median splits into equal counts across the longer side, every sample in one core, none on a border") {
@@ -151,21 +179,16 @@ TEST_CASE("seam rounds: tiles whose steps do not reach each other share a round,
 
 TEST_CASE("a target counted over some samples: the decimation stops when those reach it, whatever the others hold") {
   const std::vector<glm::dvec2> positions = testing::unitGrid(8, 6);
-  std::vector<int> everything(positions.size());
-  for (size_t i = 0; i < everything.size(); ++i) everything[i] = int(i);
-  const ViewMesh dense = ViewMesh::delaunay(positions, everything, "test");
-  std::vector<char> core(positions.size(), 0);
-  for (size_t i = 0; i < positions.size(); ++i) core[i] = positions[i].x < 3.5 ? 1 : 0;  // the left half, 24 samples
+  const ViewMesh dense = denseMesh(positions);
+  const std::vector<char> core = leftHalf(positions);  // 24 samples
 
   auto decimate = [&](const std::vector<char>& counted) {
-    NearestReferenceErrors errors(positions);
     DecimationOptions options;
-    options.maxError = 0.0;
     options.targetSamples = 8;
     options.counted = counted;
-    EdgeCollapseDecimator decimator(dense, DecimationErrors{nullptr, &errors}, options);
-    CHECK(decimator.run() == StopReason::TargetReached);
-    return decimator.mesh();
+    const Decimated decimated = decimateToTarget(dense, positions, options);
+    CHECK(decimated.stop == StopReason::TargetReached);
+    return decimated.mesh;
   };
   auto inCore = [&](const ViewMesh& mesh) {
     return std::count_if(mesh.vertices().begin(), mesh.vertices().end(), [&](int v) { return core[size_t(v)] != 0; });
@@ -180,21 +203,14 @@ TEST_CASE("a target counted over some samples: the decimation stops when those r
 
 TEST_CASE("frozen samples: collapses never remove a frozen reference, and refinement never moves one or takes a frozen sample") {
   const std::vector<glm::dvec2> positions = testing::unitGrid(8, 6);
-  std::vector<int> everything(positions.size());
-  for (size_t i = 0; i < everything.size(); ++i) everything[i] = int(i);
-  const ViewMesh dense = ViewMesh::delaunay(positions, everything, "test");
-  std::vector<char> frozen(positions.size(), 0);
-  for (size_t i = 0; i < positions.size(); ++i) frozen[i] = positions[i].x < 3.5 ? 1 : 0;  // the left half
+  const ViewMesh dense = denseMesh(positions);
+  const std::vector<char> frozen = leftHalf(positions);
 
   auto decimate = [&](const std::vector<char>& mask) {
-    NearestReferenceErrors errors(positions);
     DecimationOptions options;
-    options.maxError = 0.0;
     options.targetSamples = 10;
     options.frozen = mask;
-    EdgeCollapseDecimator decimator(dense, DecimationErrors{nullptr, &errors}, options);
-    decimator.run();
-    return decimator.mesh();
+    return decimateToTarget(dense, positions, options).mesh;
   };
   const ViewMesh free = decimate({});
   const ViewMesh partly = decimate(frozen);

@@ -1,14 +1,12 @@
 #include "core/io/replaceable_output.h"
 
+#include "core/io/atomic_file.h"
 #include "core/io/camera_path_file.h"
 #include "core/support/errors.h"
-#include "core/support/input_limits.h"
 
 #include <nlohmann/json.hpp>
 
-#include <array>
 #include <fstream>
-#include <iterator>
 
 namespace triwalk {
 
@@ -43,11 +41,14 @@ bool isUnformattedEarlierOutput(const nlohmann::json& document, OutputKind kind)
   return false;
 }
 
-bool holdsJsonOutput(const std::filesystem::path& path, OutputKind kind, std::uintmax_t size) {
-  if (size > kMaxTextFileBytes) return false;
-  std::ifstream stream(path, std::ios::binary);
-  const nlohmann::json document = nlohmann::json::parse(std::istreambuf_iterator<char>(stream),
-                                                        std::istreambuf_iterator<char>(), nullptr, false);
+bool holdsJsonOutput(const std::filesystem::path& path, OutputKind kind) {
+  std::string text;
+  try {
+    text = readTextFile(path);  // bounded as every JSON input: a larger file is no output of ours
+  } catch (const InputError&) {
+    return false;
+  }
+  const nlohmann::json document = nlohmann::json::parse(text, nullptr, false);
   if (!document.is_object()) return false;
   const auto field = document.find("format");
   if (field == document.end()) return isUnformattedEarlierOutput(document, kind);
@@ -96,7 +97,7 @@ std::string foreignOutputProblem(const std::filesystem::path& path, OutputKind k
   switch (kind) {
     case OutputKind::Selection:
     case OutputKind::Evaluation:
-    case OutputKind::RenderStatistics: ours = holdsJsonOutput(path, kind, size); break;
+    case OutputKind::RenderStatistics: ours = holdsJsonOutput(path, kind); break;
     case OutputKind::Png: ours = holdsPng(path); break;
     case OutputKind::Video: ours = holdsVideo(path); break;
     case OutputKind::CameraPath: ours = holdsCameraPath(path); break;

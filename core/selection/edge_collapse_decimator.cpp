@@ -94,11 +94,7 @@ EdgeCollapseDecimator::EdgeCollapseDecimator(const ViewMesh& mesh, DecimationErr
   }
   for (int v : mesh.vertices()) isVertex_[size_t(v)] = 1;
   vertexCount_ = mesh.vertexCount();
-  countedCount_ = vertexCount_;
-  if (!options_.counted.empty()) {
-    countedCount_ = int(std::count_if(mesh.vertices().begin(), mesh.vertices().end(),
-                                      [&](int v) { return options_.counted[size_t(v)] != 0; }));
-  }
+  for (int v : mesh.vertices()) countedCount_ += counts(v);
   if (region_ && !region_->convex()) sight_.assign(positions_.size() * positions_.size(), -1);
   if (options_.cost == CollapseCost::ServedSamples) serveInitialSamples(mesh, costing);
   std::set<Edge> edges;
@@ -953,12 +949,7 @@ void EdgeCollapseDecimator::apply(const Edge& edge, const EdgeState& state) {
   isVertex_[size_t(a)] = isVertex_[size_t(b)] = 0;
   isVertex_[size_t(plan.placement)] = 1;
   vertexCount_ -= 1;
-  if (options_.counted.empty()) {
-    countedCount_ -= 1;
-  } else {
-    countedCount_ += int(options_.counted[size_t(plan.placement)]) - int(options_.counted[size_t(a)]) -
-                     int(options_.counted[size_t(b)]);
-  }
+  countedCount_ += counts(plan.placement) - counts(a) - counts(b);
   for (auto it = edges_.begin(); it != edges_.end();) {
     it = (it->first.first == a || it->first.second == a || it->first.first == b || it->first.second == b) ? edges_.erase(it)
                                                                                                          : std::next(it);

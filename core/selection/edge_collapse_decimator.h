@@ -253,6 +253,8 @@ private:
   using Edge = std::pair<int, int>;
 
   bool isFrozen(int sample) const { return !options_.frozen.empty() && options_.frozen[size_t(sample)]; }
+  // 1 for a sample that counts toward targetSamples (DecimationOptions::counted).
+  int counts(int sample) const { return options_.counted.empty() || options_.counted[size_t(sample)] ? 1 : 0; }
   std::vector<int> neighboursOf(int vertex) const;
   std::vector<int> edgeTriangles(int a, int b) const;
   std::vector<int> boundaryNeighbours(int vertex) const;

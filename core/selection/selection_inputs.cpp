@@ -1,18 +1,15 @@
 #include "core/selection/selection_inputs.h"
 
-#include "core/selection/triangle_error.h"
-
 namespace triwalk {
 
 SelectionInputKeeper::SelectionInputKeeper(const std::filesystem::path& datasetDirectory, glm::ivec2 fullSize)
-    : errorWidth_(selectionErrorDefaults(fullSize).width),
-      warp_(selectionErrorDefaults(fullSize).synthesis.warp),
+    : defaults_(selectionErrorDefaults(fullSize)),
       panoramas_(datasetDirectory, fullSize),
       meshes_(datasetDirectory) {}
 
 void SelectionInputKeeper::keep(const ViewRecord& view, bool isSample, const Panorama& full) {
-  const Panorama copy = panoramas_.keep(view, full, errorWidth_);
-  if (isSample) meshes_.source(view, copy, warp_);
+  const Panorama copy = panoramas_.keep(view, full, defaults_.width);
+  if (isSample) meshes_.source(view, copy, defaults_.synthesis.warp);
 }
 
 }  // namespace triwalk

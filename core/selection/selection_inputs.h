@@ -12,7 +12,7 @@
 #include "core/io/dataset.h"
 #include "core/io/downsampled_panorama_store.h"
 #include "core/io/simplified_mesh_store.h"
-#include "core/synthesis/warp.h"
+#include "core/selection/triangle_error.h"
 
 #include <filesystem>
 
@@ -30,11 +30,10 @@ public:
   // file. Thread-safe.
   void keep(const ViewRecord& view, bool isSample, const Panorama& full);
 
-  int errorWidth() const { return errorWidth_; }
+  int errorWidth() const { return defaults_.width; }
 
 private:
-  int errorWidth_;
-  WarpOptions warp_;
+  TriangleErrorSettings defaults_;  // the errors a selection reads unless asked
   DownsampledPanoramaStore panoramas_;
   SimplifiedMeshStore meshes_;
 };

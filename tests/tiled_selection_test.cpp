@@ -177,6 +177,26 @@ TEST_CASE("seam rounds: tiles whose steps do not reach each other share a round,
   for (int colour = 0; colour < 4; ++colour) CHECK(std::count(grid.begin(), grid.end(), colour) == 4);
 }
 
+TEST_CASE("a seam round takes out its share of the excess exactly, split by its bands' free references") {
+  const auto removals = [](long excess, std::vector<long> free, long freeLeft) {
+    return roundRemovals(excess, free, freeLeft);
+  };
+  // The last round takes all that is over: 3 split 5:5 is 2 and 1 (the
+  // earlier step first on a tie), where rounding each step up took out 4.
+  CHECK(removals(3, {5, 5}, 10) == std::vector<int>{2, 1});
+  // A round with half the free references left takes half, rounded up,
+  // by largest remainder: 7 * 6 / 12 = 3.5 -> 4, split 4:2 as 2.67 and
+  // 1.33 -> 3 and 1.
+  CHECK(removals(7, {4, 2}, 12) == std::vector<int>{3, 1});
+  // No step is given more than its band holds: 5 of 1 + 9 (remainders
+  // tied) is 1 and 4; 6 over with 3 free references left is all 3.
+  CHECK(removals(5, {1, 9}, 10) == std::vector<int>{1, 4});
+  CHECK(removals(6, {1, 2}, 3) == std::vector<int>{1, 2});
+  // Nothing over the target, or nothing free: nothing taken.
+  CHECK(removals(0, {4, 4}, 8) == std::vector<int>{0, 0});
+  CHECK(removals(3, {0, 0}, 6) == std::vector<int>{0, 0});
+}
+
 TEST_CASE("a target counted over some samples: the decimation stops when those reach it, whatever the others hold") {
   const std::vector<glm::dvec2> positions = testing::unitGrid(8, 6);
   const ViewMesh dense = denseMesh(positions);

@@ -38,11 +38,9 @@ void decimateTiled(const Dataset& dataset, const SelectionRecipe& resolved, int 
   if (!stitched) return;
   writeSelection(out, stitched->selection, dataset);
   std::filesystem::remove_all(folder);
-  std::printf("kept %zu of %d samples, %zu triangles: the %zu tiles' cores kept %zu, the seam pass (%zu rounds) made "
-              "%zu collapses and %zu moves\n",
+  std::printf("kept %zu of %d samples, %zu triangles: the %zu tiles' cores kept %zu, %s\n",
               stitched->selection.samples.size(), dataset.sampleCount(), stitched->selection.triangles.size(),
-              stitched->tiles, stitched->unionSamples, stitched->seamColours, stitched->seamCollapses,
-              stitched->seamMoves);
+              stitched->tiles, stitched->unionSamples, describeSeamPass(*stitched).c_str());
   if (const std::string outside = describeSamplesOutsideTriangles(dataset, selectionMesh(stitched->selection, dataset));
       !outside.empty()) {
     std::printf("%s\n", outside.c_str());

@@ -110,9 +110,8 @@ void registerStitch(CLI::App& tiles) {
     InterruptScope interruptScope;
     StitchResult stitched = stitchTiles(dataset, plan, outcomes, a.jobs, a.quiet);
     writeSelection(a.out, stitched.selection, dataset);
-    std::printf("kept %zu of %d samples (the cores kept %zu; seam pass in %zu rounds: %zu collapses, %zu moves); wrote %s\n",
-                stitched.selection.samples.size(), dataset.sampleCount(), stitched.unionSamples, stitched.seamColours,
-                stitched.seamCollapses, stitched.seamMoves, a.out.c_str());
+    std::printf("kept %zu of %d samples (the cores kept %zu; %s); wrote %s\n", stitched.selection.samples.size(),
+                dataset.sampleCount(), stitched.unionSamples, describeSeamPass(stitched).c_str(), a.out.c_str());
   });
 }
 

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numeric>
 
 namespace triwalk {
 
@@ -262,10 +263,19 @@ SeamStep runSeamStep(const Dataset& dataset, const TilePlan& plan, const Selecti
   const RefinementResult refined =
       refineSelection(mesh.positions(), decimator->mesh().triangles(), sampleErrors, refinement, nullptr);
   step.moves = refined.moves.size();
+  // What the collapses and moves did, replayed on the references the step
+  // started from: a reference in no triangle of the tile's own
+  // triangulation (its room cut by the tile's edge, say) is one of the
+  // whole capture's all the same, and stays.
   std::vector<char> kept(tile.samples.size(), 0);
-  for (const Triangle& t : refined.triangles) {
-    for (int v : t) kept[size_t(v)] = 1;
-  }
+  for (int local : localReferences) kept[size_t(local)] = 1;
+  const auto replay = [&](const Collapse& change) {
+    kept[size_t(change.first)] = 0;
+    if (change.kind != PlacementKind::Relocation) kept[size_t(change.second)] = 0;
+    kept[size_t(change.placement)] = 1;
+  };
+  for (const Collapse& collapse : decimator->log()) replay(collapse);
+  for (const Collapse& move : refined.moves) replay(move);
   for (size_t i = 0; i < band.size(); ++i) {
     const auto local = std::lower_bound(tile.samples.begin(), tile.samples.end(), band[i]) - tile.samples.begin();
     step.bandKept[i] = kept[size_t(local)];
@@ -274,6 +284,39 @@ SeamStep runSeamStep(const Dataset& dataset, const TilePlan& plan, const Selecti
 }
 
 }  // namespace
+
+std::string describeSeamPass(const StitchResult& result) {
+  std::string text = "the seam pass (" + std::to_string(result.seamColours) + " rounds) made " +
+                     std::to_string(result.seamCollapses) + " collapses and " + std::to_string(result.seamMoves) + " moves";
+  if (result.seamPasses > 0) {
+    text += ", " + std::to_string(result.seamPasses) + (result.seamPasses == 1 ? " pass" : " passes") +
+            " more toward the target";
+  }
+  return text;
+}
+
+std::vector<int> roundRemovals(long excess, std::span<const long> free, long freeLeft) {
+  std::vector<int> removals(free.size(), 0);
+  const long freeHere = std::accumulate(free.begin(), free.end(), 0L);
+  if (excess <= 0 || freeHere <= 0 || freeLeft <= 0) return removals;
+  // The round's share of the excess, rounded up so that the last rounds
+  // are not left more than their bands can give, then handed out by
+  // largest remainder (ties to the earlier step): the round removes its
+  // share exactly, where each step's share rounded up would remove more
+  // than the excess. A share is at most the round's free references, so
+  // no step is given more than its band holds.
+  const long share = std::min({excess, freeHere, (excess * freeHere + freeLeft - 1) / freeLeft});
+  std::vector<std::pair<long, size_t>> remainders;  // (minus the remainder of share * free_i / freeHere, step)
+  long given = 0;
+  for (size_t i = 0; i < free.size(); ++i) {
+    removals[i] = int(share * free[i] / freeHere);
+    given += removals[i];
+    remainders.push_back({-(share * free[i] % freeHere), i});
+  }
+  std::sort(remainders.begin(), remainders.end());
+  for (size_t j = 0; j < remainders.size() && given < share; ++j, ++given) ++removals[remainders[j].second];
+  return removals;
+}
 
 std::vector<int> seamColours(const std::vector<Tile>& tiles, const std::vector<std::vector<int>>& bands,
                              size_t sampleCount) {
@@ -342,48 +385,75 @@ StitchResult stitchTiles(const Dataset& dataset, const TilePlan& plan, const std
   // The seam pass, colour by colour: the steps of one colour do not reach
   // each other, so they run at once and each sees what the earlier colours
   // left; the selection is the same whatever runs them.
-  ProgressReporter progress("seam pass, " + std::to_string(result.seamColours) + " rounds", plan.tiles.size(), quiet);
   tbb::task_arena arena(std::max(1, jobs));
-  for (int colour = 0; colour < int(result.seamColours); ++colour) {
-    throwIfInterrupted();
-    std::vector<size_t> round;
-    for (size_t k = 0; k < plan.tiles.size(); ++k) {
-      if (colours[k] == colour) round.push_back(k);
-    }
-    // With a target, the references over it are taken out here, spread over
-    // the steps still to come by the free references of their bands.
-    std::vector<int> removals(round.size(), 0);
-    if (plan.target > 0) {
-      const long excess = std::max(0L, long(std::count(isReference.begin(), isReference.end(), 1)) - long(plan.target));
-      size_t freeLeft = 0;
+  const auto referenceCount = [&] { return long(std::count(isReference.begin(), isReference.end(), 1)); };
+  const auto runRounds = [&](ProgressReporter& progress, bool onlyRemoving) {
+    for (int colour = 0; colour < int(result.seamColours); ++colour) {
+      throwIfInterrupted();
+      std::vector<size_t> round;
       for (size_t k = 0; k < plan.tiles.size(); ++k) {
-        if (colours[k] < colour) continue;
-        for (int s : bands[k]) freeLeft += size_t(isReference[size_t(s)]);
+        if (colours[k] == colour) round.push_back(k);
       }
-      for (size_t i = 0; i < round.size(); ++i) {
-        size_t free = 0;
-        for (int s : bands[round[i]]) free += size_t(isReference[size_t(s)]);
-        if (freeLeft > 0) removals[i] = int(std::ceil(double(excess) * double(free) / double(freeLeft)));
+      // With a target, the references over it are taken out here, spread
+      // over the steps still to come by the free references of their bands.
+      std::vector<int> removals(round.size(), 0);
+      if (plan.target > 0) {
+        std::vector<long> free(round.size(), 0);
+        long freeLeft = 0;
+        for (size_t k = 0; k < plan.tiles.size(); ++k) {
+          if (colours[k] < colour) continue;
+          long freeHere = 0;
+          for (int s : bands[k]) freeHere += isReference[size_t(s)];
+          freeLeft += freeHere;
+          const auto position = std::find(round.begin(), round.end(), k);
+          if (position != round.end()) free[size_t(position - round.begin())] = freeHere;
+        }
+        removals = roundRemovals(std::max(0L, referenceCount() - long(plan.target)), free, freeLeft);
       }
-    }
-    std::vector<SeamStep> steps(round.size());
-    arena.execute([&] {
-      tbb::parallel_for(size_t(0), round.size(), size_t(1), [&](size_t i) {
-        if (interruptRequested()) return;
-        steps[i] = runSeamStep(dataset, plan, settings, weights, region, round[i], bands[round[i]], isReference,
-                               removals[i]);
-        progress.advance();
+      if (onlyRemoving) {
+        std::vector<size_t> removing;
+        std::vector<int> theirRemovals;
+        for (size_t i = 0; i < round.size(); ++i) {
+          if (removals[i] > 0) removing.push_back(round[i]), theirRemovals.push_back(removals[i]);
+        }
+        round = std::move(removing);
+        removals = std::move(theirRemovals);
+      }
+      std::vector<SeamStep> steps(round.size());
+      arena.execute([&] {
+        tbb::parallel_for(size_t(0), round.size(), size_t(1), [&](size_t i) {
+          if (interruptRequested()) return;
+          steps[i] = runSeamStep(dataset, plan, settings, weights, region, round[i], bands[round[i]], isReference,
+                                 removals[i]);
+          progress.advance();
+        });
       });
-    });
-    throwIfInterrupted();
-    for (size_t i = 0; i < round.size(); ++i) {
-      const std::vector<int>& band = bands[round[i]];
-      for (size_t b = 0; b < band.size(); ++b) isReference[size_t(band[b])] = steps[i].bandKept[b];
-      result.seamCollapses += steps[i].collapses;
-      result.seamMoves += steps[i].moves;
+      throwIfInterrupted();
+      for (size_t i = 0; i < round.size(); ++i) {
+        const std::vector<int>& band = bands[round[i]];
+        for (size_t b = 0; b < band.size(); ++b) isReference[size_t(band[b])] = steps[i].bandKept[b];
+        result.seamCollapses += steps[i].collapses;
+        result.seamMoves += steps[i].moves;
+      }
     }
+  };
+  {
+    ProgressReporter progress("seam pass, " + std::to_string(result.seamColours) + " rounds", plan.tiles.size(), quiet);
+    runRounds(progress, false);
+    progress.finish();
   }
-  progress.finish();
+  // A step takes out fewer than it was given where its band's references
+  // cannot all collapse (a tile whose triangulation there is too thin):
+  // what is still over the target is handed again to the steps that can,
+  // pass after pass while a pass takes any out.
+  while (plan.target > 0 && referenceCount() > long(plan.target)) {
+    const long before = referenceCount();
+    ProgressReporter progress("seam pass again, " + std::to_string(before - plan.target) + " over the target", 0, quiet);
+    runRounds(progress, true);
+    progress.finish();
+    ++result.seamPasses;
+    if (referenceCount() == before) break;
+  }
 
   std::vector<int> references;
   for (size_t i = 0; i < positions.size(); ++i) {

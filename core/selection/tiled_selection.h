@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace triwalk {
@@ -77,7 +78,19 @@ struct StitchResult {
   size_t unionSamples = 0;  // references of the cores before the seam pass
   size_t seamCollapses = 0, seamMoves = 0;
   size_t seamColours = 0;  // rounds of the seam pass (steps of one round run at once)
+  size_t seamPasses = 0;   // passes after the first, taking out what was still over the target
 };
+
+// "the seam pass (2 rounds) made 3 collapses and 35 moves", and the passes
+// after the first when there were any.
+std::string describeSeamPass(const StitchResult& result);
+
+// How many references each step of a seam round takes out, with `excess`
+// references over the target and free[i] references in step i's band
+// (freeLeft: in the bands of this round and the rounds after it): the
+// round's share of the excess by its free references, rounded up, split
+// among its steps by largest remainder, none more than its band holds.
+std::vector<int> roundRemovals(long excess, std::span<const long> free, long freeLeft);
 
 // The seam pass's rounds: tiles coloured (greedily, in tile order) so that
 // no two of a colour reach each other, i.e. neither's band holds a sample

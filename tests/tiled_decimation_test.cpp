@@ -166,7 +166,7 @@ TEST_CASE("a stitched selection reaches its target exactly, keeps its view trian
 
 namespace triwalk {
 
-TEST_CASE("tiles refuses bad input in one line before any work: a bad --tiles, a tile not in the plan, a damaged plan, another plan's tile") {
+TEST_CASE("tiles refuses bad input in one line before any work: a bad --tiles, a tile not in the plan, a damaged plan, another plan's tile, a damaged tile") {
   testing::TemporaryDirectory directory;
   const std::string dataset = floorDataset().string();
   const RunResult badCount = runTriwalk(directory, "decimate --tiles many --dataset " + dataset + " --out " +
@@ -188,6 +188,14 @@ TEST_CASE("tiles refuses bad input in one line before any work: a bad --tiles, a
   const RunResult stale = runTriwalk(directory, "tiles stitch --plan " + other + " --out " + (directory / "y.json").string());
   CHECK(stale.status != 0);
   CHECK(stale.err.find("tile_0000.json: tile 0 of 4 has not run for this plan") != std::string::npos);
+
+  // A tile's file with counts no run makes: refused naming it.
+  nlohmann::json negative = readJsonFile(directory / "work" / "tile_0000.json");
+  negative["collapses"] = -1;
+  writeJsonFile(directory / "work" / "tile_0000.json", negative);
+  const RunResult counted = runTriwalk(directory, "tiles stitch --plan " + work + " --out " + (directory / "n.json").string());
+  CHECK(counted.status != 0);
+  CHECK(counted.err == "triwalk: error: " + work + "/tile_0000.json: collapses, moves and seconds must not be negative\n");
 
   // A plan whose tile could not be decimated (2 samples) or asks for a
   // negative count: refused naming the plan and the tile, before its views

@@ -188,9 +188,11 @@ std::optional<TileOutcome> readTileOutcome(const std::filesystem::path& folder, 
   for (int r : outcome.references) {
     if (!std::binary_search(members.begin(), members.end(), r)) root.fail("references: a sample outside the tile's core");
   }
-  outcome.collapses = size_t(root.integer("collapses"));
-  outcome.moves = size_t(root.integer("moves"));
+  const int collapses = root.integer("collapses"), moves = root.integer("moves");
   outcome.seconds = root.number("seconds");
+  if (collapses < 0 || moves < 0 || !(outcome.seconds >= 0.0)) root.fail("collapses, moves and seconds must not be negative");
+  outcome.collapses = size_t(collapses);
+  outcome.moves = size_t(moves);
   return outcome;
 }
 

@@ -14,7 +14,7 @@ cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz
 
 status=0
-for harness in manifest exr selection camera_path region pose_table store numeric; do
+for harness in manifest exr selection camera_path region pose_table store numeric tile_plan tile_outcome; do
   corpus="build/fuzz/corpus/$harness"
   findings="build/fuzz/findings/$harness"
   mkdir -p "$corpus" "$findings"

@@ -226,21 +226,29 @@ SeamStep runSeamStep(const Dataset& dataset, const TilePlan& plan, const Selecti
   for (int s : band) step.bandKept.push_back(isReference[size_t(s)]);
   std::vector<int> localReferences;
   std::vector<char> frozen(tile.samples.size(), 1);
-  size_t freeReferences = 0;
   for (size_t local = 0; local < tile.samples.size(); ++local) {
     const int sample = tile.samples[local];
     if (isAmong(band, sample)) frozen[local] = 0;
-    if (isReference[size_t(sample)]) {
-      localReferences.push_back(int(local));
-      if (!frozen[local]) ++freeReferences;
-    }
+    if (isReference[size_t(sample)]) localReferences.push_back(int(local));
   }
-  if (freeReferences == 0 || localReferences.size() < 4) return step;
+  if (localReferences.size() < 4) return step;
 
   const Dataset part = dataset.withSamples(tile.samples);
+  const ViewMesh mesh = datasetMesh(part, localReferences, dataset.manifestPath().string());
+  // A reference in no triangle of the tile's own triangulation (its room
+  // cut by the tile's edge) is no vertex of this mesh, so to the collapses
+  // and moves it looks like a free sample: frozen, it is never taken as a
+  // placement (which would count one reference for two) and never counted
+  // among those the step may take out.
+  size_t freeReferences = 0;
+  for (int local : localReferences) {
+    if (!isAmong(mesh.vertices(), local)) frozen[size_t(local)] = 1;
+    if (!frozen[size_t(local)]) ++freeReferences;
+  }
+  if (freeReferences == 0) return step;
+
   DatasetTriangleErrors errors(part, settings.errors, LoadedViews::Samples, true);
   CachingReconstructionErrors sampleErrors(errors);
-  const ViewMesh mesh = datasetMesh(part, localReferences, dataset.manifestPath().string());
   DecimationOptions options = settings.selection.decimation;
   options.frozen = frozen;
   options.sampleWeights = restricted(weights, tile.samples);

@@ -395,6 +395,11 @@ StitchResult stitchTiles(const Dataset& dataset, const TilePlan& plan, const std
   // left; the selection is the same whatever runs them.
   tbb::task_arena arena(std::max(1, jobs));
   const auto referenceCount = [&] { return long(std::count(isReference.begin(), isReference.end(), 1)); };
+  const auto bandReferences = [&](size_t k) {
+    long count = 0;
+    for (int s : bands[k]) count += isReference[size_t(s)];
+    return count;
+  };
   const auto runRounds = [&](ProgressReporter& progress, bool onlyRemoving) {
     for (int colour = 0; colour < int(result.seamColours); ++colour) {
       throwIfInterrupted();
@@ -406,15 +411,11 @@ StitchResult stitchTiles(const Dataset& dataset, const TilePlan& plan, const std
       // over the steps still to come by the free references of their bands.
       std::vector<int> removals(round.size(), 0);
       if (plan.target > 0) {
-        std::vector<long> free(round.size(), 0);
+        std::vector<long> free;
+        for (size_t k : round) free.push_back(bandReferences(k));
         long freeLeft = 0;
         for (size_t k = 0; k < plan.tiles.size(); ++k) {
-          if (colours[k] < colour) continue;
-          long freeHere = 0;
-          for (int s : bands[k]) freeHere += isReference[size_t(s)];
-          freeLeft += freeHere;
-          const auto position = std::find(round.begin(), round.end(), k);
-          if (position != round.end()) free[size_t(position - round.begin())] = freeHere;
+          if (colours[k] >= colour) freeLeft += bandReferences(k);
         }
         removals = roundRemovals(std::max(0L, referenceCount() - long(plan.target)), free, freeLeft);
       }

@@ -160,6 +160,25 @@ TEST_CASE("a stitched selection reaches its target exactly, keeps its view trian
     const ViewMesh mesh = selectionMesh(selection, dataset);
     for (int i = 0; i < dataset.sampleCount(); ++i) CHECK(mesh.locate(glm::dvec2(dataset.sample(i).position)) >= 0);
   }
+
+  // Tiles whose cores meet no other (buildings apart) have empty bands, so
+  // the seam pass cannot take out the cores' surplus: the cores' own pass
+  // does. A band of 0 m makes every band empty.
+  const std::string work = (directory / "apart").string();
+  REQUIRE(runTriwalk(directory, "tiles plan --quiet --tiles 4 --target 20 --dataset " + floorDataset().string() +
+                                    " --out " + work).status == 0);
+  nlohmann::json plan = readJsonFile(directory / "apart" / "plan.json");
+  plan["band"] = 0.0;
+  writeJsonFile(directory / "apart" / "plan.json", plan);
+  for (int k = 0; k < 4; ++k) {
+    REQUIRE(runTriwalk(directory, "tiles run --quiet --plan " + work + " --tile " + std::to_string(k)).status == 0);
+  }
+  const RunResult stitched = runTriwalk(directory, "tiles stitch --plan " + work + " --out " + (directory / "apart.json").string());
+  INFO(stitched.err);
+  REQUIRE(stitched.status == 0);
+  CHECK(stitched.out.find("the seam pass (1 rounds)") != std::string::npos);
+  CHECK(stitched.out.find("the cores' pass took out ") != std::string::npos);
+  CHECK(readSelection(directory / "apart.json", dataset).samples.size() == 20);
 }
 
 }  // namespace triwalk

@@ -300,6 +300,9 @@ std::string describeSeamPass(const StitchResult& result) {
     text += ", " + std::to_string(result.seamPasses) + (result.seamPasses == 1 ? " pass" : " passes") +
             " more toward the target";
   }
+  if (result.coreRemovals > 0) {
+    text += "; the cores' pass took out " + std::to_string(result.coreRemovals) + " the bands could not";
+  }
   return text;
 }
 
@@ -395,27 +398,29 @@ StitchResult stitchTiles(const Dataset& dataset, const TilePlan& plan, const std
   // left; the selection is the same whatever runs them.
   tbb::task_arena arena(std::max(1, jobs));
   const auto referenceCount = [&] { return long(std::count(isReference.begin(), isReference.end(), 1)); };
-  const auto bandReferences = [&](size_t k) {
-    long count = 0;
-    for (int s : bands[k]) count += isReference[size_t(s)];
-    return count;
-  };
-  const auto runRounds = [&](ProgressReporter& progress, bool onlyRemoving) {
-    for (int colour = 0; colour < int(result.seamColours); ++colour) {
+  const auto runRounds = [&](const std::vector<std::vector<int>>& changing, const std::vector<int>& colourOf,
+                             ProgressReporter& progress, bool onlyRemoving) {
+    const auto freeReferences = [&](size_t k) {
+      long count = 0;
+      for (int s : changing[k]) count += isReference[size_t(s)];
+      return count;
+    };
+    const int rounds = *std::max_element(colourOf.begin(), colourOf.end()) + 1;
+    for (int colour = 0; colour < rounds; ++colour) {
       throwIfInterrupted();
       std::vector<size_t> round;
       for (size_t k = 0; k < plan.tiles.size(); ++k) {
-        if (colours[k] == colour) round.push_back(k);
+        if (colourOf[k] == colour) round.push_back(k);
       }
       // With a target, the references over it are taken out here, spread
-      // over the steps still to come by the free references of their bands.
+      // over the steps still to come by the free references they may change.
       std::vector<int> removals(round.size(), 0);
       if (plan.target > 0) {
         std::vector<long> free;
-        for (size_t k : round) free.push_back(bandReferences(k));
+        for (size_t k : round) free.push_back(freeReferences(k));
         long freeLeft = 0;
         for (size_t k = 0; k < plan.tiles.size(); ++k) {
-          if (colours[k] >= colour) freeLeft += bandReferences(k);
+          if (colourOf[k] >= colour) freeLeft += freeReferences(k);
         }
         removals = roundRemovals(std::max(0L, referenceCount() - long(plan.target)), free, freeLeft);
       }
@@ -432,15 +437,15 @@ StitchResult stitchTiles(const Dataset& dataset, const TilePlan& plan, const std
       arena.execute([&] {
         tbb::parallel_for(size_t(0), round.size(), size_t(1), [&](size_t i) {
           if (interruptRequested()) return;
-          steps[i] = runSeamStep(dataset, plan, settings, weights, region, round[i], bands[round[i]], isReference,
+          steps[i] = runSeamStep(dataset, plan, settings, weights, region, round[i], changing[round[i]], isReference,
                                  removals[i]);
           progress.advance();
         });
       });
       throwIfInterrupted();
       for (size_t i = 0; i < round.size(); ++i) {
-        const std::vector<int>& band = bands[round[i]];
-        for (size_t b = 0; b < band.size(); ++b) isReference[size_t(band[b])] = steps[i].bandKept[b];
+        const std::vector<int>& members = changing[round[i]];
+        for (size_t b = 0; b < members.size(); ++b) isReference[size_t(members[b])] = steps[i].bandKept[b];
         result.seamCollapses += steps[i].collapses;
         result.seamMoves += steps[i].moves;
       }
@@ -448,20 +453,38 @@ StitchResult stitchTiles(const Dataset& dataset, const TilePlan& plan, const std
   };
   {
     ProgressReporter progress("seam pass, " + std::to_string(result.seamColours) + " rounds", plan.tiles.size(), quiet);
-    runRounds(progress, false);
+    runRounds(bands, colours, progress, false);
     progress.finish();
   }
   // A step takes out fewer than it was given where its band's references
   // cannot all collapse (a tile whose triangulation there is too thin):
   // what is still over the target is handed again to the steps that can,
   // pass after pass while a pass takes any out.
-  while (plan.target > 0 && referenceCount() > long(plan.target)) {
+  const auto passesToTarget = [&](const std::vector<std::vector<int>>& changing, const std::vector<int>& colourOf,
+                                  const std::string& what) {
+    size_t passes = 0;
+    while (plan.target > 0 && referenceCount() > long(plan.target)) {
+      const long before = referenceCount();
+      ProgressReporter progress(what + ", " + std::to_string(before - plan.target) + " over the target", 0, quiet);
+      runRounds(changing, colourOf, progress, true);
+      progress.finish();
+      if (referenceCount() == before) break;
+      ++passes;
+    }
+    return passes;
+  };
+  result.seamPasses = passesToTarget(bands, colours, "seam pass again");
+  // Where the bands cannot give what is over the target (a tile whose
+  // core meets no other, such as a building of its own, has an empty band
+  // and kept its share of the surplus), the cores themselves give it: the
+  // same steps with every reference of the core free, in rounds of tiles
+  // that do not reach each other's cores.
+  if (plan.target > 0 && referenceCount() > long(plan.target)) {
+    std::vector<std::vector<int>> wholeCores;
+    for (const Tile& tile : plan.tiles) wholeCores.push_back(tile.core.members);
     const long before = referenceCount();
-    ProgressReporter progress("seam pass again, " + std::to_string(before - plan.target) + " over the target", 0, quiet);
-    runRounds(progress, true);
-    progress.finish();
-    ++result.seamPasses;
-    if (referenceCount() == before) break;
+    passesToTarget(wholeCores, seamColours(plan.tiles, wholeCores, positions.size()), "the cores' pass");
+    result.coreRemovals = size_t(before - referenceCount());
   }
 
   std::vector<int> references;

@@ -78,7 +78,8 @@ struct StitchResult {
   size_t unionSamples = 0;  // references of the cores before the seam pass
   size_t seamCollapses = 0, seamMoves = 0;
   size_t seamColours = 0;  // rounds of the seam pass (steps of one round run at once)
-  size_t seamPasses = 0;   // passes after the first, taking out what was still over the target
+  size_t seamPasses = 0;   // passes after the first that took out some of what was still over the target
+  size_t coreRemovals = 0;  // references the cores' own pass took out where the bands could not (empty bands)
 };
 
 // "the seam pass (2 rounds) made 3 collapses and 35 moves", and the passes

@@ -13,6 +13,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 namespace triwalk {
@@ -126,6 +127,17 @@ TEST_CASE("cores with a bound: the largest tile, margin included, is split until
   // Without margins the bound is the core's own count.
   CHECK(splitIntoCores(positions, 0.0, {.mostTileSamples = 16}).size() == 4);
   CHECK(splitIntoCores(positions, 0.0, {.mostTileSamples = 64}).size() == 1);
+}
+
+TEST_CASE("the margin is 4 refinement radii, and two reference spacings where a target count makes the references sparser") {
+  // No target, or a target dense enough: the fixed margin.
+  CHECK(tileMargin(1.5, 450, 0) == doctest::Approx(6.0));
+  CHECK(tileMargin(1.5, 450, 90) == doctest::Approx(6.0));  // a fifth: two spacings are 3.4 radii
+  // One reference for 20 samples of a grid of spacing 1 (radius sqrt 2):
+  // an area of 20 each, neighbours sqrt(40 / sqrt 3) = 4.806 apart.
+  CHECK(tileMargin(std::sqrt(2.0), 400, 20) == doctest::Approx(2.0 * std::sqrt(40.0 / std::sqrt(3.0))));
+  // It grows as the square root of the samples per reference.
+  CHECK(tileMargin(1.0, 8000, 100) == doctest::Approx(2.0 * tileMargin(1.0, 2000, 100)));
 }
 
 TEST_CASE("a tile holds its core and the samples within the margin of it, and the band is the core's samples near another core") {

@@ -63,6 +63,12 @@ struct TilePlanRequest {
   int jobs = 1;             // tiles measured at once
 };
 
+// The margin of every tile (and the seam band's width), in metres, for a
+// capture of `samples` whose refinement radius is `radius`: 4 radii, and
+// two reference spacings where a target count (0: none) makes the
+// references sparser than that.
+double tileMargin(double radius, size_t samples, int target);
+
 // Cuts the capture into tiles and resolves the settings; measures the dense
 // mean by tiles (each loading only its views, `jobs` at a time) when the
 // threshold is relative. Progress unless quiet; Ctrl-C throws Interrupted.
@@ -80,6 +86,7 @@ struct StitchResult {
   size_t seamColours = 0;  // rounds of the seam pass (steps of one round run at once)
   size_t seamPasses = 0;   // passes after the first that took out some of what was still over the target
   size_t coreRemovals = 0;  // references the cores' own pass took out where the bands could not (empty bands)
+  size_t isolatedRemovals = 0;  // references in no view triangle dropped to meet the target when no step could
 };
 
 // "the seam pass (2 rounds) made 3 collapses and 35 moves", and the passes

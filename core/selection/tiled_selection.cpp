@@ -514,10 +514,14 @@ StitchResult stitchTiles(const Dataset& dataset, const TilePlan& plan, const std
     result.coreRemovals = size_t(before - referenceCount());
   }
 
-  std::vector<int> references;
-  for (size_t i = 0; i < positions.size(); ++i) {
-    if (isReference[i]) references.push_back(int(i));
-  }
+  const auto keptReferences = [&] {
+    std::vector<int> kept;
+    for (size_t i = 0; i < positions.size(); ++i) {
+      if (isReference[i]) kept.push_back(int(i));
+    }
+    return kept;
+  };
+  std::vector<int> references = keptReferences();
   ViewMesh final = datasetMesh(dataset, references, dataset.manifestPath().string());
   // What no step can take out is references in no triangle of their
   // tile's triangulation (a room cut off with fewer than three). Those in
@@ -540,10 +544,7 @@ StitchResult stitchTiles(const Dataset& dataset, const TilePlan& plan, const std
     for (size_t i = 0; i < dropped; ++i) isReference[size_t(isolated[i].second)] = 0;
     result.isolatedRemovals = dropped;
     if (dropped > 0) {
-      references.clear();
-      for (size_t i = 0; i < positions.size(); ++i) {
-        if (isReference[i]) references.push_back(int(i));
-      }
+      references = keptReferences();
       final = datasetMesh(dataset, references, dataset.manifestPath().string());
     }
   }

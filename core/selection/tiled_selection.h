@@ -90,7 +90,8 @@ struct StitchResult {
 };
 
 // "the seam pass (2 rounds) made 3 collapses and 35 moves", and the passes
-// after the first when there were any.
+// after the first, the cores' pass and the references dropped when there
+// were any.
 std::string describeSeamPass(const StitchResult& result);
 
 // How many references each step of a seam round takes out, with `excess`

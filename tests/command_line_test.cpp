@@ -462,6 +462,12 @@ TEST_CASE("help lists what a user needs, and --help-all the options that tune th
   for (const char* expert : {"--priced-samples", "--recosting", "--refine-screen", "--epsilon", "--alpha"}) {
     CHECK_MESSAGE(all.out.find(expert) != std::string::npos, expert);
   }
+  // The suite's options to select with other errors than it evaluates with.
+  const RunResult suiteHelp = runTriwalk(directory, "suite --help");
+  REQUIRE(suiteHelp.status == 0);
+  CHECK(suiteHelp.out.find("--tiles") != std::string::npos);
+  CHECK(suiteHelp.out.find("--selection-") == std::string::npos);
+  CHECK(runTriwalk(directory, "suite --help-all").out.find("--selection-blend-weights") != std::string::npos);
   // Hidden from --help, not from the parser.
   testing::writeAnalyticDataset(directory / "data", 3, 3, 32, 0);
   const RunResult expertRun = runTriwalk(directory, "decimate --quiet --target 4 --priced-samples 4 --epsilon 0.06 --dataset " +

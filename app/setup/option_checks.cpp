@@ -152,7 +152,9 @@ const std::set<std::string> kExpertOptions = {
     "--stretch-test", "--grazing-angle", "--depth-ratio", "--point-warp",   "--mesh-tolerance",  "--epsilon",
     "--min-weight-distance", "--alpha",  "--beta",        "--delta",        "--pixel-weighting", "--triangle-destinations",
     "--cost",         "--fixed-boundary", "--one-ring",   "--unweighted-cost", "--priced-samples", "--recosting",
-    "--exchanges",    "--refine-screen", "--refine-priced"};
+    "--exchanges",    "--refine-screen", "--refine-priced",
+    // the suite's: select with other errors than it evaluates with
+    "--selection-blend-weights", "--selection-source-mesh", "--selection-error-width"};
 
 // --help without the expert options. They are left out of the listing,
 // not hidden in CLI11's way (an empty group), which would also drop

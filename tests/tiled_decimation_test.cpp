@@ -67,7 +67,7 @@ TEST_CASE("a tiled selection is the same byte for byte with --jobs 1, --jobs 2, 
   const RunResult single = runTriwalk(directory, "decimate --quiet --tiles 4 --jobs 1 --dataset " + dataset + " --out " + one.string());
   INFO(single.err);
   REQUIRE(single.status == 0);
-  CHECK(single.out.find("the 4 tiles kept") != std::string::npos);
+  CHECK(single.out.find("the 4 tiles' cores kept") != std::string::npos);
   CHECK(single.out.find("the seam pass (2 rounds)") != std::string::npos);
   CHECK(!std::filesystem::exists(directory / "jobs1.json.tiles"));  // the work folder goes once the selection is written
   const std::string reference = bytesOf(one);
@@ -162,43 +162,6 @@ TEST_CASE("a stitched selection reaches its target exactly, keeps its view trian
     for (int i = 0; i < dataset.sampleCount(); ++i) CHECK(mesh.locate(glm::dvec2(dataset.sample(i).position)) >= 0);
   }
 
-  // Each tile keeps, beside its core's references, those of its margin
-  // that serve a sample of its core (a room of the core may be drawn from
-  // them alone); they join the union the seam pass starts from.
-  {
-    const std::string served = (directory / "served").string();
-    REQUIRE(runTriwalk(directory, "tiles plan --quiet --tiles 4 --target 12 --dataset " + floorDataset().string() +
-                                      " --out " + served).status == 0);
-    const nlohmann::json plan = readJsonFile(directory / "served" / "plan.json");
-    std::vector<int> kept;
-    size_t coreReferences = 0, servingReferences = 0;
-    for (int k = 0; k < 4; ++k) {
-      CAPTURE(k);
-      REQUIRE(runTriwalk(directory, "tiles run --quiet --plan " + served + " --tile " + std::to_string(k)).status == 0);
-      char name[32];
-      std::snprintf(name, sizeof name, "tile_%04d.json", k);
-      const nlohmann::json outcome = readJsonFile(directory / "served" / name);
-      const std::vector<int> core = plan["tiles"][size_t(k)]["members"].get<std::vector<int>>();
-      const std::vector<int> samples = plan["tiles"][size_t(k)]["samples"].get<std::vector<int>>();
-      for (int id : outcome["serving"].get<std::vector<int>>()) {
-        CHECK(std::find(core.begin(), core.end(), id) == core.end());
-        CHECK(std::find(samples.begin(), samples.end(), id) != samples.end());
-        kept.push_back(id);
-        ++servingReferences;
-      }
-      for (int id : outcome["references"].get<std::vector<int>>()) kept.push_back(id), ++coreReferences;
-    }
-    CHECK(servingReferences > 0);
-    std::sort(kept.begin(), kept.end());
-    kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
-    CHECK(kept.size() > coreReferences);
-    const RunResult stitched = runTriwalk(directory, "tiles stitch --plan " + served + " --out " + (directory / "served.json").string());
-    INFO(stitched.err);
-    REQUIRE(stitched.status == 0);
-    CHECK(stitched.out.find("(the tiles kept " + std::to_string(kept.size()) + ",") != std::string::npos);
-    CHECK(readSelection(directory / "served.json", dataset).samples.size() == 12);
-  }
-
   // Tiles whose cores meet no other (buildings apart) have empty bands, so
   // the seam pass cannot take out the cores' surplus: the cores' own pass
   // does. A band of 0 m makes every band empty.
@@ -253,16 +216,6 @@ TEST_CASE("tiles refuses bad input in one line before any work: a bad --tiles, a
   const RunResult counted = runTriwalk(directory, "tiles stitch --plan " + work + " --out " + (directory / "n.json").string());
   CHECK(counted.status != 0);
   CHECK(counted.err == "triwalk: error: " + work + "/tile_0000.json: collapses, moves and seconds must not be negative\n");
-
-  // A tile's file naming a reference of its own core as one of its
-  // margin's: refused naming it.
-  negative["collapses"] = 0;
-  negative["serving"] = nlohmann::json::array({negative["references"][0]});
-  writeJsonFile(directory / "work" / "tile_0000.json", negative);
-  const RunResult doubled = runTriwalk(directory, "tiles stitch --plan " + work + " --out " + (directory / "n.json").string());
-  CHECK(doubled.status != 0);
-  CHECK(doubled.err == "triwalk: error: " + work + "/tile_0000.json: serving: a sample outside the tile's margin\n");
-  CHECK(!std::filesystem::exists(directory / "n.json"));
 
   // A plan whose tile could not be decimated (2 samples) or asks for a
   // negative count: refused naming the plan and the tile, before its views

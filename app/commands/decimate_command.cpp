@@ -38,7 +38,7 @@ void decimateTiled(const Dataset& dataset, const SelectionRecipe& resolved, int 
   if (!stitched) return;
   writeSelection(out, stitched->selection, dataset);
   std::filesystem::remove_all(folder);
-  std::printf("kept %zu of %d samples, %zu triangles: the %zu tiles kept %zu with the margins' references serving their cores, %s\n",
+  std::printf("kept %zu of %d samples, %zu triangles: the %zu tiles' cores kept %zu, %s\n",
               stitched->selection.samples.size(), dataset.sampleCount(), stitched->selection.triangles.size(),
               stitched->tiles, stitched->unionSamples, describeSeamPass(*stitched).c_str());
   if (const std::string outside = describeSamplesOutsideTriangles(dataset, selectionMesh(stitched->selection, dataset));

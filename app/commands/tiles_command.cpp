@@ -83,10 +83,9 @@ void registerRun(CLI::App& tiles) {
     InterruptScope interruptScope;
     const TileOutcome outcome = runTile(dataset, plan, a.tile, tileLayerCacheBytes(1), a.quiet);
     writeTileOutcome(a.plan, plan, a.tile, outcome, dataset);
-    std::printf("tile %d of %zu: %zu samples, kept %zu references of its core and %zu of its margin serving it in %.1f s; "
-                "wrote %s\n",
-                a.tile, plan.tiles.size(), plan.tiles[size_t(a.tile)].samples.size(), outcome.references.size(),
-                outcome.serving.size(), outcome.seconds, tileOutcomeFile(a.plan, a.tile).c_str());
+    std::printf("tile %d of %zu: %zu samples, kept %zu references of its core in %.1f s; wrote %s\n", a.tile,
+                plan.tiles.size(), plan.tiles[size_t(a.tile)].samples.size(), outcome.references.size(), outcome.seconds,
+                tileOutcomeFile(a.plan, a.tile).c_str());
   });
 }
 
@@ -111,10 +110,8 @@ void registerStitch(CLI::App& tiles) {
     InterruptScope interruptScope;
     StitchResult stitched = stitchTiles(dataset, plan, outcomes, a.jobs, a.quiet);
     writeSelection(a.out, stitched.selection, dataset);
-    std::printf("kept %zu of %d samples (the tiles kept %zu, with the margins' references serving their cores; %s); "
-                "wrote %s\n",
-                stitched.selection.samples.size(), dataset.sampleCount(), stitched.unionSamples,
-                describeSeamPass(stitched).c_str(), a.out.c_str());
+    std::printf("kept %zu of %d samples (the cores kept %zu; %s); wrote %s\n", stitched.selection.samples.size(),
+                dataset.sampleCount(), stitched.unionSamples, describeSeamPass(stitched).c_str(), a.out.c_str());
   });
 }
 

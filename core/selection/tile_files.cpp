@@ -13,7 +13,7 @@
 namespace triwalk {
 namespace {
 
-constexpr int kTilePlanVersion = 2;
+constexpr int kTilePlanVersion = 1;
 constexpr const char* kPlanFileName = "plan.json";
 
 nlohmann::json idsOf(std::span<const int> indices, const Dataset& dataset) {
@@ -168,7 +168,6 @@ void writeTileOutcome(const std::filesystem::path& folder, const TilePlan& plan,
   const nlohmann::json document = {{"format", "triwalk-tile"},     {"version", kTilePlanVersion},
                                    {"plan", plan.key},       {"tile", tile},
                                    {"references", idsOf(outcome.references, dataset)},
-                                   {"serving", idsOf(outcome.serving, dataset)},
                                    {"collapses", outcome.collapses}, {"moves", outcome.moves},
                                    {"seconds", outcome.seconds}};
   writeJsonFile(tileOutcomeFile(folder, tile), document);
@@ -188,13 +187,6 @@ std::optional<TileOutcome> readTileOutcome(const std::filesystem::path& folder, 
   const std::vector<int>& members = plan.tiles[size_t(tile)].core.members;
   for (int r : outcome.references) {
     if (!std::binary_search(members.begin(), members.end(), r)) root.fail("references: a sample outside the tile's core");
-  }
-  outcome.serving = IdReader(dataset).indices(root, "serving");
-  const std::vector<int>& samples = plan.tiles[size_t(tile)].samples;
-  for (int r : outcome.serving) {
-    if (std::binary_search(members.begin(), members.end(), r) || !std::binary_search(samples.begin(), samples.end(), r)) {
-      root.fail("serving: a sample outside the tile's margin");
-    }
   }
   const int collapses = root.integer("collapses"), moves = root.integer("moves");
   outcome.seconds = root.number("seconds");

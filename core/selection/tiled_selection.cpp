@@ -223,26 +223,6 @@ TileOutcome runTile(const Dataset& dataset, const TilePlan& plan, int k, size_t 
     if (isAmong(tile.core.members, sample)) outcome.references.push_back(sample);
   }
   std::sort(outcome.references.begin(), outcome.references.end());
-  // The margin's references that serve a sample of the core: the tile
-  // chose its core's references with them, and a room of the core may be
-  // drawn from them alone (the house at 5% of its samples in 4 tiles: a
-  // room left with one reference of its core, +33% at its probes once the
-  // margin's were dropped). They join the union; the seam pass, whose band
-  // holds them, takes out those the neighbouring core's own choice makes
-  // redundant.
-  const ViewMesh chosen = datasetTriangles(part, run.selection.triangles);
-  int hint = -1;
-  for (size_t local = 0; local < tile.samples.size(); ++local) {
-    if (!isAmong(tile.core.members, tile.samples[local])) continue;
-    hint = chosen.locate(chosen.position(int(local)), hint);
-    if (hint < 0) break;
-    for (int vertex : chosen.triangles()[size_t(hint)]) {
-      const int sample = tile.samples[size_t(vertex)];
-      if (!isAmong(tile.core.members, sample)) outcome.serving.push_back(sample);
-    }
-  }
-  std::sort(outcome.serving.begin(), outcome.serving.end());
-  outcome.serving.erase(std::unique(outcome.serving.begin(), outcome.serving.end()), outcome.serving.end());
   outcome.collapses = run.collapses;
   outcome.moves = run.refinement.moves.size();
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -422,7 +402,6 @@ StitchResult stitchTiles(const Dataset& dataset, const TilePlan& plan, const std
   std::vector<char> isReference(positions.size(), 0);
   for (const TileOutcome& outcome : outcomes) {
     for (int r : outcome.references) isReference[size_t(r)] = 1;
-    for (int r : outcome.serving) isReference[size_t(r)] = 1;
   }
   StitchResult result;
   result.unionSamples = size_t(std::count(isReference.begin(), isReference.end(), 1));

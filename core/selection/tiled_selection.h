@@ -50,11 +50,9 @@ struct TilePlan {
   std::vector<int> tileTargets;  // per tile (with target): its share of the count
 };
 
-// What one tile chose: the references of its core, and those of its
-// margin that serve a sample of its core (sample indices, sorted).
+// What one tile chose: the references of its core (sample indices, sorted).
 struct TileOutcome {
   std::vector<int> references;
-  std::vector<int> serving;
   size_t collapses = 0, moves = 0;
   double seconds = 0.0;
 };
@@ -83,7 +81,7 @@ TileOutcome runTile(const Dataset& dataset, const TilePlan& plan, int k, size_t 
 struct StitchResult {
   Selection selection;  // method "tiled_edge_collapse", settings the plan's
   size_t tiles = 0;
-  size_t unionSamples = 0;  // references the tiles kept (cores, and margins serving them) before the seam pass
+  size_t unionSamples = 0;  // references of the cores before the seam pass
   size_t seamCollapses = 0, seamMoves = 0;
   size_t seamColours = 0;  // rounds of the seam pass (steps of one round run at once)
   size_t seamPasses = 0;   // passes after the first that took out some of what was still over the target

@@ -425,6 +425,13 @@ TEST_CASE("selection.json round trip, and bad selections name the file and the p
   testing::requireInputError(
       [&] { readSelection(edit([](nlohmann::json& d) { d["dataset"]["fingerprint"] = "0123456789abcdef"; }), dataset); }, bad,
       "made for another data set");
+  // The same positions captured at another width take the selection; other
+  // positions (one path more) do not.
+  testing::writeAnalyticDataset(directory / "wider", 4, 3, 64, 1);
+  CHECK(readSelection(file, Dataset::open(directory / "wider")).samples == selection.samples);
+  testing::writeAnalyticDataset(directory / "longer", 4, 4, 32, 1);
+  testing::requireInputError([&] { readSelection(file, Dataset::open(directory / "longer")); }, file.string(),
+                             "made for another data set");
 
   // The errors the decimation read, which the viewer goes on with: a file
   // that names only the lattice gets decimate's defaults for the rest.

@@ -146,8 +146,6 @@ Dataset Dataset::open(const std::filesystem::path& directory) {
 
 std::string Dataset::fingerprint() const {
   StableHash hash;
-  hash.addValue(manifest_.width);
-  hash.addValue(manifest_.height);
   for (const ViewRecord& view : manifest_.samples) {
     hash.addValue(view.id);
     hash.addValue(view.position);

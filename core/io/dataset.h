@@ -63,9 +63,12 @@ public:
   const std::filesystem::path& directory() const { return directory_; }
   std::filesystem::path manifestPath() const { return directory_ / kManifestFileName; }
   int sampleCount() const { return int(manifest_.samples.size()); }
-  // 16 hex digits that name the samples (their ids and positions) and the
-  // panorama size: a selection records it, so that one made for another
-  // data set is refused as such.
+  // 16 hex digits that name the samples (their ids and positions): a
+  // selection records it, so that one made for another data set is
+  // refused as such. Not the panorama size: a selection names samples by
+  // id and position, and holds for a capture of the same positions at
+  // another width (docs/RESULTS.md renders one selection from captures at
+  // 512, 1024 and 2048).
   std::string fingerprint() const;
   int probeCount() const { return int(manifest_.probes.size()); }
   const ViewRecord& sample(int index) const { return manifest_.samples.at(size_t(index)); }

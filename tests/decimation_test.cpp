@@ -424,7 +424,14 @@ TEST_CASE("selection.json round trip, and bad selections name the file and the p
   // A selection of another data set (here: another fingerprint) is named as such.
   testing::requireInputError(
       [&] { readSelection(edit([](nlohmann::json& d) { d["dataset"]["fingerprint"] = "0123456789abcdef"; }), dataset); }, bad,
-      "made for another data set");
+      "other sample ids or positions (fingerprint 0123456789abcdef, the data set's " + dataset.fingerprint() +
+          "); run decimate on this data set again");
+  testing::requireInputError(
+      [&] {
+        readSelection(edit([](nlohmann::json& d) { d["dataset"] = {{"fingerprint", "0123456789abcdef"}, {"scene", "x"}}; }),
+                      dataset);
+      },
+      bad, "made for another data set (scene 'x', 0 samples)");
   // The same positions captured at another width take the selection; other
   // positions (one path more) do not.
   testing::writeAnalyticDataset(directory / "wider", 4, 3, 64, 1);

@@ -283,8 +283,17 @@ Selection readSelection(const std::filesystem::path& path, const Dataset& datase
   if (root.has("dataset")) {
     const JsonObject made = root.object("dataset");
     if (made.has("fingerprint") && made.string("fingerprint") != dataset.fingerprint()) {
-      root.fail("made for another data set (scene '" + made.stringOr("scene", "") + "', " +
-                std::to_string(made.has("samples") ? made.integer("samples") : 0) + " samples) than " +
+      const std::string scene = made.stringOr("scene", "");
+      const int samples = made.has("samples") ? made.integer("samples") : 0;
+      if (scene == dataset.manifest().scene && samples == dataset.sampleCount()) {
+        // The likely cases: a recapture with other positions, or a file
+        // written before the fingerprint named the samples alone (it held
+        // the panorama size too); either way its indices cannot be trusted.
+        root.fail("made for another data set: the scene and sample count of " + dataset.manifestPath().string() +
+                  " but other sample ids or positions (fingerprint " + made.string("fingerprint") + ", the data set's " +
+                  dataset.fingerprint() + "); run decimate on this data set again");
+      }
+      root.fail("made for another data set (scene '" + scene + "', " + std::to_string(samples) + " samples) than " +
                 dataset.manifestPath().string() + " (scene '" + dataset.manifest().scene + "', " +
                 std::to_string(dataset.sampleCount()) + " samples)");
     }

@@ -8,7 +8,8 @@
 // uncovered. The triangle's normal is the cross product of the world
 // point's screen derivatives, exact for a planar triangle since all four
 // pixels of a quad evaluate the same triangle; a point (no triangle) has
-// none and counts 1, as on the CPU.
+// none and counts 1, as on the CPU. Pixels drawn from the source's
+// silhouette fringe are trusted least (fringeReliability).
 #include "warp_layer_texel.glsl"
 uniform vec3 sourcePosition;
 uniform vec3 cameraPosition;
@@ -28,8 +29,14 @@ float warpReliability(vec3 point, vec3 normal) {
   return rho > kMinimumReliability ? min(rho, 1.0) : kMinimumReliability;
 }
 
-void writeLayer(vec3 color) {
+// core/synthesis/warp_reliability.h's fringeReliability.
+float fringeReliability(float reliability, float fringe) {
+  return fringe > 0.0 ? kMinimumReliability : reliability;
+}
+
+// fringe: the source's silhouette fringe flags interpolated at the pixel.
+void writeLayer(vec3 color, float fringe) {
   vec3 normal = cross(dFdx(worldPoint), dFdy(worldPoint));
   float reliability = inverseDistance > 0.0 ? warpReliability(worldPoint, normal) : 1.0;
-  layer = warpLayerTexel(color, inverseDistance, reliability);
+  layer = warpLayerTexel(color, inverseDistance, fringeReliability(reliability, fringe));
 }

@@ -21,8 +21,10 @@ layout(location = 0) in vec4 vertexPoint;
 out vec3 vertexColor;
 out float inverseDistance;  // 1 / metres from the camera; 0 at infinity
 out vec3 worldPoint;        // the surface point, for the layer's reliability (a direction at infinity)
+out float vertexFringe;     // the pixel's silhouette fringe flag (core/synthesis/silhouette_fringe.h): 1 - the colour's alpha
 
 void main() {
+  vertexFringe = 0.0;
   if (explicitVertices) {
     vertexColor = vec3(0.0);
     worldPoint = vertexPoint.xyz;
@@ -42,7 +44,9 @@ void main() {
     ivec2 pixel = ivec2(gl_VertexID % panoramaSize.x, gl_VertexID / panoramaSize.x);
     direction = equirectDirection(vec2(pixel) + 0.5, vec2(panoramaSize), panoramaYaw);
     distance = texelFetch(distanceTexture, pixel, 0).r;
-    vertexColor = texelFetch(colorTexture, pixel, 0).rgb;
+    vec4 texel = texelFetch(colorTexture, pixel, 0);
+    vertexColor = texel.rgb;
+    vertexFringe = 1.0 - texel.a;
   }
   if (isinf(distance)) {
     gl_Position = viewProjection * vec4(direction, 0.0);

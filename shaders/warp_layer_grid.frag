@@ -4,5 +4,6 @@
 // that a simplified reference's layer interpolates no colour.
 #include "warp_layer.glsl"
 in vec3 vertexColor;
+in float vertexFringe;
 
-void main() { writeLayer(vertexColor); }
+void main() { writeLayer(vertexColor, vertexFringe); }

@@ -2,6 +2,7 @@
 
 #include "core/geometry/projection.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -76,14 +77,26 @@ AnalyticHit AnalyticScene::trace(glm::vec3 origin, glm::vec3 direction) const {
   return hit;
 }
 
-Panorama renderPanorama(const AnalyticScene& scene, glm::vec3 position, int width) {
+Panorama renderPanorama(const AnalyticScene& scene, glm::vec3 position, int width, int colorSamplesPerSide) {
   const EquirectProjection projection{width, width / 2, 0.0f};
   Panorama panorama{ColorImage(width, width / 2), ScalarImage(width, width / 2)};
+  const int n = std::max(1, colorSamplesPerSide);
   for (int v = 0; v < projection.height; ++v) {
     for (int u = 0; u < width; ++u) {
       const AnalyticHit hit = scene.trace(position, projection.pixelDirection(u, v));
-      panorama.color.at(u, v) = hit.color;
       panorama.distance.at(u, v) = hit.distance;
+      if (n == 1) {
+        panorama.color.at(u, v) = hit.color;
+        continue;
+      }
+      glm::vec3 sum(0.0f);
+      for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {
+          const glm::vec2 inside((float(i) + 0.5f) / float(n), (float(j) + 0.5f) / float(n));
+          sum += scene.trace(position, projection.direction(glm::vec2(float(u), float(v)) + inside)).color;
+        }
+      }
+      panorama.color.at(u, v) = sum / float(n * n);
     }
   }
   return panorama;

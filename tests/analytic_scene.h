@@ -44,7 +44,12 @@ struct AnalyticScene {
 // Smooth per-surface pattern in [0.15, 0.85].
 glm::vec3 smoothPattern(glm::vec3 point, int surface);
 
-Panorama renderPanorama(const AnalyticScene& scene, glm::vec3 position, int width);
+// Each pixel's colour and distance along its centre ray; with
+// colorSamplesPerSide n > 1 the colour is the mean of n x n rays spread
+// evenly over the pixel while the distance stays the centre ray's, as a
+// capture's anti-aliased colour is (shaders/capture_equirect.frag): pixels
+// on a silhouette mix two surfaces' colours at one surface's distance.
+Panorama renderPanorama(const AnalyticScene& scene, glm::vec3 position, int width, int colorSamplesPerSide = 1);
 
 }  // namespace triwalk::testing
 

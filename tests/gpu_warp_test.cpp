@@ -201,6 +201,47 @@ TEST_CASE("GPU and CPU blend with the same weights: reliability (the default) or
   CHECK(psnr(cpuReliable.image, cpuDistance.image) < psnr(gpuReliable, cpuReliable.image) - 6.0);
 }
 
+TEST_CASE("a pillar's silhouette colour leaves no strand on the wall behind it, on the CPU and the GPU") {
+  // A closed room with a red pillar, the references rendered as a capture
+  // renders them: colour anti-aliased, distance the centre ray's, so the
+  // pixels on the pillar's silhouette mix its red with the wall's green at
+  // one surface's distance (core/synthesis/silhouette_fringe.h). Reference
+  // A stands in front of the pillar; from a step to its right, A's
+  // silhouette pixels at the back wall's distance land on the wall 6
+  // degrees right of the pillar: a vertical red strand. B, farther right,
+  // saw that stretch of wall cleanly. The camera sees only that stretch
+  // (the pillar is out of view), whose red is the walls' 0.15 everywhere.
+  testing::AnalyticScene scene;
+  scene.room = testing::AnalyticScene::Room{{-3.0f, -3.0f, 0.0f}, {3.0f, 3.0f, 2.8f}, false};
+  scene.cylinders.push_back({{0.0f, 1.0f}, 0.3f, 0.0f, 2.8f});
+  scene.shade = [](glm::vec3 point, int surface) {
+    if (surface >= 200) return glm::vec3(0.9f, 0.05f, 0.05f);
+    return glm::vec3(0.15f, 0.5f + 0.1f * std::sin(point.x + point.z), 0.4f + 0.1f * std::cos(point.y));
+  };
+  std::vector<Reference> references;
+  for (const glm::vec3 position : {glm::vec3(0.0f, -1.0f, 1.5f), glm::vec3(1.2f, -1.0f, 1.5f)}) {
+    references.push_back({testing::renderPanorama(scene, position, 512, 4), position});
+  }
+  PinholeCamera camera = testCamera({0.4f, -1.0f, 1.5f}, 80.0f, 96, 96);
+  camera.pitchDegrees = 0.0f;
+  camera.verticalFovDegrees = 20.0f;
+  const int wallRed = int(std::lround(255.0f * linearToSrgb(0.15f)));
+  const auto reddest = [](const Rgb8Image& image) {
+    int most = 0;
+    for (const glm::u8vec3 pixel : image.pixels) most = std::max(most, int(pixel.r));
+    return most;
+  };
+  const int cpu = reddest(cpuFrame(references, camera, HoleMode::Fill).image);
+  const int gpuGrid = reddest(gpuFrame(references, camera, HeadlessBackend::Egl, HoleMode::Fill));
+  // The paper's inverse-distance weights trust every pixel alike: the strand.
+  const int unweighted = reddest(cpuFrame(references, camera, HoleMode::Fill, BlendWeights::Distance).image);
+  INFO("the walls' red " << wallRed << "; reddest pixel: CPU " << cpu << ", GPU " << gpuGrid
+                          << ", inverse distance alone " << unweighted);
+  CHECK(unweighted > wallRed + 25);
+  CHECK(cpu <= wallRed + 6);
+  CHECK(gpuGrid <= wallRed + 6);
+}
+
 TEST_CASE("the trust colouring: 1 where three references saw the surface head-on, 1/3 where one did, shaded by the scene") {
   // References standing at the camera see every surface exactly as it does
   // (reliability 1): trust is the count of them within the blend interval, over 3.

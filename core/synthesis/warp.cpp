@@ -2,6 +2,7 @@
 
 #include "core/support/errors.h"
 #include "core/synthesis/mesh_simplification.h"
+#include "core/synthesis/silhouette_fringe.h"
 #include "core/synthesis/warp_reliability.h"
 
 #include <tbb/blocked_range.h>
@@ -90,6 +91,7 @@ WarpSource::WarpSource(const Panorama& panorama, glm::vec3 position, float yawRa
       position_(position),
       projection_{panorama.width(), panorama.height(), yawRadians} {
   TRIWALK_CHECK(width_ >= 2 && height_ >= 2, "panorama too small to warp");
+  fringe_ = silhouetteFringe(panorama.distance);
   if (options.mesh == SourceMesh::Simplified && stored) {
     // A stored mesh names its orphans too: the grid's points and stretch
     // test, most of a reference's preparation in the viewer's loader
@@ -288,16 +290,37 @@ void WarpSource::colorsAlong(std::span<const glm::vec3> directions, std::span<gl
   for (size_t i = 0; i < directions.size(); ++i) colors[i] = colorAt(imagePoints[i]);
 }
 
-glm::vec3 WarpSource::colorAt(glm::vec2 p) const {
-  const float fx = p.x - 0.5f, fy = std::clamp(p.y - 0.5f, 0.0f, float(height_ - 1));
+namespace {
+
+// Bilinear interpolation of per-pixel values value(pixel index) at an image
+// point of a width x height panorama, wrapping across the seam as the GPU's
+// colour texture does.
+template <typename Value>
+auto bilinearAt(glm::vec2 p, int width, int height, Value value) {
+  const float fx = p.x - 0.5f, fy = std::clamp(p.y - 0.5f, 0.0f, float(height - 1));
   const int x0 = int(std::floor(fx)), y0 = int(fy);
   const float tx = fx - float(x0), ty = fy - float(y0);
   // imagePoint's x lies in [0, W), so x0 is -1 to W - 1: wrap by a compare,
   // not a division (this runs for every pixel a simplified warp covers).
-  const int xa = x0 < 0 ? x0 + width_ : x0, xb = xa + 1 == width_ ? 0 : xa + 1;
-  const int ya = y0, yb = std::min(y0 + 1, height_ - 1);
-  auto at = [&](int x, int y) { return texture_.pixels[size_t(y) * size_t(width_) + size_t(x)]; };
+  const int xa = x0 < 0 ? x0 + width : x0, xb = xa + 1 == width ? 0 : xa + 1;
+  const int ya = y0, yb = std::min(y0 + 1, height - 1);
+  auto at = [&](int x, int y) { return value(size_t(y) * size_t(width) + size_t(x)); };
   return (1.0f - ty) * ((1.0f - tx) * at(xa, ya) + tx * at(xb, ya)) + ty * ((1.0f - tx) * at(xa, yb) + tx * at(xb, yb));
+}
+
+}  // namespace
+
+glm::vec3 WarpSource::colorAt(glm::vec2 p) const {
+  return bilinearAt(p, width_, height_, [&](size_t i) { return texture_.pixels[i]; });
+}
+
+float WarpSource::fringeAt(glm::vec2 p) const {
+  return bilinearAt(p, width_, height_, [&](size_t i) { return float(fringe_[i]); });
+}
+
+float WarpSource::fringe(uint32_t vertex) const {
+  const uint32_t pixel = mesh_ == SourceMesh::Simplified ? gridVertex_[vertex] : vertex;
+  return pixel < fringe_.size() ? float(fringe_[pixel]) : 0.0f;
 }
 
 DestinationCamera DestinationCamera::panorama(glm::vec3 position, int width, int height, float yawRadians) {
@@ -894,6 +917,9 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
         layer.distance.pixels[i] = std::bit_cast<float>(uint32_t(key >> 32));
         if ((payload & 3u) == kPointPayload) {
           layer.color.pixels[i] = source.color(payload >> 2);
+          if (reliability == LayerReliability::Computed) {
+            layer.reliability[i] = fringeReliability(1.0f, source.fringe(payload >> 2));
+          }
           continue;
         }
         uint32_t indices[3];
@@ -920,14 +946,28 @@ WarpLayer warpToCamera(const WarpSource& source, const DestinationCamera& destin
           for (int k = 0; k < 3; ++k) color += float(coverage.weights[k]) * source.color(indices[k]);
           layer.color.pixels[i] = color;
         }
-        if (!atInfinity && reliability == LayerReliability::Computed) {
-          layer.reliability[i] = warpReliability(point, glm::cross(b - a, c - a), source.position(), destination.position);
+        if (reliability == LayerReliability::Computed) {
+          const float stretched =
+              atInfinity ? 1.0f
+                         : warpReliability(point, glm::cross(b - a, c - a), source.position(), destination.position);
+          // A simplified source's fringe is looked up along the ray with its colour, below.
+          float fringe = 0.0f;
+          if (source.mesh() == SourceMesh::Grid) {
+            for (int k = 0; k < 3; ++k) fringe += float(coverage.weights[k]) * source.fringe(indices[k]);
+          }
+          layer.reliability[i] = fringeReliability(stretched, fringe);
         }
       }
       rayImagePoints.resize(rays.size());
       rayColors.resize(rays.size());
       source.colorsAlong(rays, rayImagePoints, rayColors);
-      for (size_t k = 0; k < rays.size(); ++k) layer.color.pixels[rayPixels[k]] = rayColors[k];
+      for (size_t k = 0; k < rays.size(); ++k) {
+        layer.color.pixels[rayPixels[k]] = rayColors[k];
+        if (reliability == LayerReliability::Computed) {
+          float& trust = layer.reliability[rayPixels[k]];
+          trust = fringeReliability(trust, source.fringeAt(rayImagePoints[k]));
+        }
+      }
     }
   });
   timings.resolveSeconds = secondsSince(stageStart);

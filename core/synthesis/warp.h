@@ -121,6 +121,14 @@ public:
   uint32_t keptTriangleCount() const { return keptCount_; }
   // A finite vertex none of whose grid triangles was kept.
   bool orphan(uint32_t vertex) const { return orphan_[vertex] != 0; }
+  // 1 for a vertex whose pixel lies in the silhouette fringe
+  // (core/synthesis/silhouette_fringe.h), 0 elsewhere and at the poles.
+  float fringe(uint32_t vertex) const;
+  // The fringe flags per pixel, row-major.
+  const std::vector<uint8_t>& fringeFlags() const { return fringe_; }
+  // Simplified: the fringe flags interpolated bilinearly at an image point
+  // of colorsAlong, as its colour is.
+  float fringeAt(glm::vec2 imagePoint) const;
   // Simplified: the source's colour along each ray from its centre
   // (bilinear, wrapping across the seam), through the rays' image points
   // (scratch space the caller keeps).
@@ -155,6 +163,7 @@ private:
   std::vector<uint32_t> triangles_; // simplified: three vertices per triangle
   std::vector<uint32_t> gridVertex_;  // simplified: each vertex's grid number, ascending
   std::vector<uint8_t> orphan_;
+  std::vector<uint8_t> fringe_;     // per pixel
   uint32_t pixelVertexCount_ = 0;
   uint32_t keptCount_ = 0;
   ColorImage texture_;              // simplified: the source's colours, for colorsAlong

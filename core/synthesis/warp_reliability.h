@@ -44,4 +44,16 @@ inline float warpReliability(glm::vec3 point, glm::vec3 normal, glm::vec3 source
   return rho > kMinimumReliability ? std::min(rho, 1.0f) : kMinimumReliability;
 }
 
+// The reliability of a pixel drawn from a source's silhouette fringe
+// (core/synthesis/silhouette_fringe.h): `fringe` is the fringe flags of the
+// source pixels interpolated at the drawn point, so above 0 wherever a
+// fringe pixel's colour reaches it (the triangles around a fringe vertex,
+// a texel's bilinear footprint). The fringe's colour is partly another
+// surface's, so there the layer counts least and one that saw the surface
+// cleanly takes over; scaled by the flag instead, the half of each such
+// triangle nearer the fringe pixel left the strand at half strength.
+inline float fringeReliability(float reliability, float fringe) {
+  return fringe > 0.0f ? kMinimumReliability : reliability;
+}
+
 }  // namespace triwalk

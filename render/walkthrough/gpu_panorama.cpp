@@ -70,11 +70,14 @@ PreparedPanorama preparePanorama(const Panorama& panorama, float yawRadians, con
   // the bits are the file's.
   std::vector<uint16_t> rgb(pixels * 3);
   floatsToHalves(std::span<const float>(&panorama.color.pixels[0].r, pixels * 3), rgb);
-  const uint16_t one = glm::packHalf1x16(1.0f);
+  // Alpha: 1 - the pixel's silhouette fringe flag, which the layer shaders
+  // read with the colour (interpolated as it is) for the reliability.
+  const uint16_t one = glm::packHalf1x16(1.0f), zero = glm::packHalf1x16(0.0f);
+  const std::vector<uint8_t>& fringe = source.fringeFlags();
   prepared.colorHalf.resize(pixels * 4);
   for (size_t i = 0; i < pixels; ++i) {
     std::copy_n(&rgb[3 * i], 3, &prepared.colorHalf[4 * i]);
-    prepared.colorHalf[4 * i + 3] = one;
+    prepared.colorHalf[4 * i + 3] = fringe[i] ? zero : one;
   }
   prepared.distance = panorama.distance.pixels;
   for (int pole = 0; pole < 2 && !simplified; ++pole) {

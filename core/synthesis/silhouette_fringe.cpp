@@ -3,17 +3,17 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include <algorithm>
 #include <cmath>
 
 namespace triwalk {
 
 namespace {
 
-bool acrossDiscontinuity(float a, float b) {
-  const bool infiniteA = std::isinf(a), infiniteB = std::isinf(b);
-  if (infiniteA || infiniteB) return infiniteA != infiniteB;
-  return std::max(a, b) > kFringeDepthRatio * std::min(a, b);
+// Whether `here` lies behind `neighbour` across a discontinuity: the sky
+// beside a surface, or a surface farther by more than kFringeDepthRatio.
+bool behind(float here, float neighbour) {
+  if (std::isinf(neighbour)) return false;
+  return std::isinf(here) || here > kFringeDepthRatio * neighbour;
 }
 
 }  // namespace
@@ -25,16 +25,16 @@ std::vector<uint8_t> silhouetteFringe(const ScalarImage& distance) {
     for (int y = rows.begin(); y != rows.end(); ++y) {
       for (int x = 0; x < width; ++x) {
         const float here = distance.at(x, y);
-        bool mixed = false;
-        for (int dy = -1; dy <= 1 && !mixed; ++dy) {
+        bool flagged = false;
+        for (int dy = -1; dy <= 1 && !flagged; ++dy) {
           const int ny = y + dy;
           if (ny < 0 || ny >= height) continue;
-          for (int dx = -1; dx <= 1 && !mixed; ++dx) {
+          for (int dx = -1; dx <= 1 && !flagged; ++dx) {
             const int nx = (x + dx + width) % width;
-            mixed = acrossDiscontinuity(here, distance.at(nx, ny));
+            flagged = behind(here, distance.at(nx, ny));
           }
         }
-        fringe[size_t(y) * size_t(width) + size_t(x)] = mixed;
+        fringe[size_t(y) * size_t(width) + size_t(x)] = flagged;
       }
     }
   });

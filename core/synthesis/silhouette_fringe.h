@@ -6,8 +6,9 @@
 // surface's (the nearest cube texel's plane), and a real camera blurs
 // colour across a silhouette the same way. So the pixels beside a depth
 // discontinuity carry some of the other surface's colour at this one's
-// distance. Warped to a view from elsewhere, that colour lands on the
-// surface behind the silhouette, away from it: a thin light strand across
+// distance. Those of the farther surface (or the sky), warped to a view
+// from elsewhere, put the nearer surface's colour on the surface behind
+// the silhouette, away from it: a thin light strand across
 // the ceiling and down a wall behind a pillar, grey lines across the sky
 // behind a roof's edge (docs/RESULTS.md, "Artifacts"). The blend trusts
 // these pixels least (core/synthesis/warp_reliability.h,
@@ -25,13 +26,15 @@ namespace triwalk {
 // stretch test's own default, WarpOptions::maxDepthRatio).
 inline constexpr float kFringeDepthRatio = 1.15f;
 
-// 1 for each pixel (row-major) with a pixel of its 3x3 neighbourhood
-// across a discontinuity from it: one at infinity (sky) and the other not,
-// or distances more than kFringeDepthRatio apart. Columns wrap (the
-// panorama is a full turn), rows stop at the poles. The mixing reaches one
-// pixel either side: each of the four colour samples is bilinear over cube
-// texels about two thirds of a panorama pixel wide (two pixels either side
-// gained no PSNR on the main job's walks; docs/DESIGN.md, "Blend weights").
+// 1 for each pixel (row-major) that lies behind a pixel of its 3x3
+// neighbourhood across a discontinuity: sky beside a surface, or a surface
+// more than kFringeDepthRatio times farther. Columns wrap (the panorama is
+// a full turn), rows stop at the poles. The mixing reaches one pixel: each
+// of the four colour samples is bilinear over cube texels about two thirds
+// of a panorama pixel wide. The nearer side's mixed pixels are not flagged:
+// they land on that surface's own silhouette, where the view's truth mixes
+// too (flagged as well, they raised probe errors on 128-pixel captures by
+// 0.8% to 2.1%; docs/DESIGN.md, "Blend weights").
 std::vector<uint8_t> silhouetteFringe(const ScalarImage& distance);
 
 }  // namespace triwalk

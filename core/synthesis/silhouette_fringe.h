@@ -16,15 +16,16 @@
 // takes over; where none did they still show, so no hole opens.
 
 #include "core/image/image.h"
+#include "core/synthesis/warp.h"
 
 #include <cstdint>
 #include <vector>
 
 namespace triwalk {
 
-// Distances further apart than this ratio are two surfaces (the depth-ratio
-// stretch test's own default, WarpOptions::maxDepthRatio).
-inline constexpr float kFringeDepthRatio = 1.15f;
+// Distances further apart than this ratio are two surfaces: the depth-ratio
+// stretch test's default, so the two agree on what a discontinuity is.
+inline constexpr float kFringeDepthRatio = WarpOptions{}.maxDepthRatio;
 
 // 1 for each pixel (row-major) that lies behind a pixel of its 3x3
 // neighbourhood across a discontinuity: sky beside a surface, or a surface

@@ -35,8 +35,16 @@ float fringeReliability(float reliability, float fringe) {
 }
 
 // fringe: the source's silhouette fringe flags interpolated at the pixel.
+// The inverse distance written is that of the interpolated world point,
+// exact on the triangle's plane; the interpolated 1 / distance is not, and
+// across a simplified triangle metres wide it was off by several percent,
+// more than the blend interval: a wall seen by two references counted as
+// two surfaces, and the nearer-seeming one's silhouette fringe was drawn
+// alone. Interpolated, it still tells sky (0) from surface.
 void writeLayer(vec3 color, float fringe) {
   vec3 normal = cross(dFdx(worldPoint), dFdy(worldPoint));
-  float reliability = inverseDistance > 0.0 ? warpReliability(worldPoint, normal) : 1.0;
-  layer = warpLayerTexel(color, inverseDistance, fringeReliability(reliability, fringe));
+  bool surface = inverseDistance > 0.0;
+  float reliability = surface ? warpReliability(worldPoint, normal) : 1.0;
+  float exactInverseDistance = surface ? 1.0 / length(worldPoint - cameraPosition) : 0.0;
+  layer = warpLayerTexel(color, exactInverseDistance, fringeReliability(reliability, fringe));
 }

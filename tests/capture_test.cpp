@@ -10,8 +10,8 @@
 #include "render/capture/panorama_capturer.h"
 #include "render/capture/truth_frame_renderer.h"
 #include "render/gl/gl_context.h"
-#include "render/scene/mesh_builder.h"
-#include "render/scene/scene_description.h"
+#include "scene/mesh_builder.h"
+#include "scene/scene_description.h"
 #include "tests/test_support.h"
 
 #include <doctest/doctest.h>

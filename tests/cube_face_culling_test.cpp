@@ -5,7 +5,7 @@
 #include "render/capture/cube_face_culling.h"
 #include "render/capture/panorama_capturer.h"
 #include "render/gl/gl_context.h"
-#include "render/scene/scene_description.h"
+#include "scene/scene_description.h"
 
 #include <doctest/doctest.h>
 

@@ -1,11 +1,11 @@
-// The generated floor (render/scene/floor_plan.h): the spec it is asked
+// The generated floor (scene/floor_plan.h): the spec it is asked
 // by, the same floor from the same seed, one walkable region that reaches
 // every room through its doors and keeps clear of every wall and cabinet,
 // and a sample count that grows with the rooms.
 
 #include "core/io/json_fields.h"
-#include "render/scene/floor_plan.h"
-#include "render/scene/scene_description.h"
+#include "scene/floor_plan.h"
+#include "scene/scene_description.h"
 #include "tests/test_support.h"
 
 #include <doctest/doctest.h>

@@ -12,7 +12,7 @@
 #include "core/synthesis/view_synthesis.h"
 #include "render/capture/dataset_capture.h"
 #include "render/gl/gl_context.h"
-#include "render/scene/scene_description.h"
+#include "scene/scene_description.h"
 #include "render/walkthrough/frame_scale.h"
 #include "render/walkthrough/gpu_warper.h"
 #include "render/walkthrough/panorama_overlay.h"

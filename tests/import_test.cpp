@@ -5,7 +5,7 @@
 #include "render/capture/panorama_capturer.h"
 #include "render/capture/walkable_area.h"
 #include "render/gl/gl_context.h"
-#include "render/scene/assimp_scene.h"
+#include "scene/assimp_scene.h"
 #include "tests/test_support.h"
 
 #include <doctest/doctest.h>

@@ -6,7 +6,7 @@
 #include "render/capture/dataset_capture.h"
 #include "render/capture/walkable_area.h"
 #include "render/gl/gl_context.h"
-#include "render/scene/scene_description.h"
+#include "scene/scene_description.h"
 #include "tests/test_support.h"
 
 #include <doctest/doctest.h>

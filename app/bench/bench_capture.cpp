@@ -3,7 +3,7 @@
 #include "core/io/exr_io.h"
 #include "render/capture/dataset_capture.h"
 #include "render/capture/panorama_capturer.h"
-#include "render/scene/scene_description.h"
+#include "scene/scene_description.h"
 
 #include <filesystem>
 

@@ -8,7 +8,7 @@
 #include "app/setup/tile_jobs.h"
 #include "core/support/errors.h"
 #include "render/gl/gl_context.h"
-#include "render/scene/scene_description.h"
+#include "scene/scene_description.h"
 
 #include <cstdio>
 #include <set>

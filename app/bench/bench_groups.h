@@ -8,7 +8,7 @@
 #include "core/io/dataset.h"
 #include "core/selection/reference_selection.h"
 #include "core/selection/triangle_error.h"
-#include "render/scene/scene.h"
+#include "scene/scene.h"
 
 #include <chrono>
 #include <filesystem>

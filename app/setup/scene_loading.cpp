@@ -3,8 +3,8 @@
 #include "app/setup/option_checks.h"
 #include "core/support/errors.h"
 #include "core/io/json_fields.h"
-#include "render/scene/floor_plan.h"
-#include "render/scene/scene_description.h"
+#include "scene/floor_plan.h"
+#include "scene/scene_description.h"
 
 #include <cstdio>
 #include <filesystem>

@@ -5,8 +5,8 @@
 
 #include "core/geometry/walkable_region.h"
 #include "core/io/dataset.h"
-#include "render/scene/assimp_scene.h"
-#include "render/scene/scene.h"
+#include "scene/assimp_scene.h"
+#include "scene/scene.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>

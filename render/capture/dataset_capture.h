@@ -6,7 +6,7 @@
 // manifest.json + one OpenEXR per view.
 
 #include "core/io/dataset.h"
-#include "render/scene/scene.h"
+#include "scene/scene.h"
 
 #include <nlohmann/json.hpp>
 

@@ -5,7 +5,7 @@
 
 #include "render/capture/cube_face_culling.h"
 #include "render/gl/gl_objects.h"
-#include "render/scene/scene.h"
+#include "scene/scene.h"
 
 #include <array>
 #include <vector>

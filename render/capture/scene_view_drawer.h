@@ -10,7 +10,7 @@
 #include "render/capture/gpu_scene.h"
 #include "render/gl/gl_objects.h"
 #include "render/gl/shader_program.h"
-#include "render/scene/scene.h"
+#include "scene/scene.h"
 
 #include <span>
 #include <vector>

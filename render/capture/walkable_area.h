@@ -10,7 +10,7 @@
 // a region of polygons with holes (core/geometry/cell_region.h).
 
 #include "core/geometry/walkable_region.h"
-#include "render/scene/scene.h"
+#include "scene/scene.h"
 
 #include <string>
 #include <vector>

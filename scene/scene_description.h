@@ -5,7 +5,7 @@
 // The format is documented at the top of assets/builtin_scene.json's
 // companion, docs/SCENE_FORMAT.md.
 
-#include "render/scene/scene.h"
+#include "scene/scene.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,9 +1,9 @@
-#include "render/scene/scene_description.h"
+#include "scene/scene_description.h"
 
 #include "core/image/color.h"
 #include "core/io/json_fields.h"
-#include "render/scene/mesh_builder.h"
-#include "render/scene/procedural_texture.h"
+#include "scene/mesh_builder.h"
+#include "scene/procedural_texture.h"
 
 #include <cstdlib>
 #include <map>

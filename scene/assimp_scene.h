@@ -5,7 +5,7 @@
 // vertex colors and lightmaps (Quake 3); a texture that cannot be found
 // becomes a neutral color and is reported, never a failure.
 
-#include "render/scene/scene.h"
+#include "scene/scene.h"
 
 #include <filesystem>
 #include <string>

@@ -1,4 +1,4 @@
-#include "render/scene/procedural_texture.h"
+#include "scene/procedural_texture.h"
 
 #include <glm/gtc/constants.hpp>
 

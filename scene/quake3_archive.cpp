@@ -1,4 +1,4 @@
-#include "render/scene/quake3_archive.h"
+#include "scene/quake3_archive.h"
 
 #include "core/support/errors.h"
 

@@ -1,4 +1,4 @@
-#include "render/scene/floor_plan.h"
+#include "scene/floor_plan.h"
 
 #include "core/geometry/cell_region.h"
 #include "core/support/errors.h"
@@ -85,7 +85,7 @@ class FloorPlanBuilder {
 public:
   FloorPlanBuilder(const FloorPlanSize& size, const nlohmann::json& builtin) : size_(size), engine_(size.seed) {
     description_ = {{"name", "builtin-floor-" + std::to_string(size.columns) + "x" + std::to_string(size.rows)},
-                    {"comment", "A procedural floor of rooms, corridors and doors (render/scene/floor_plan.h)."},
+                    {"comment", "A procedural floor of rooms, corridors and doors (scene/floor_plan.h)."},
                     {"ambient", builtin.at("ambient")},
                     {"sky", builtin.at("sky")},
                     {"materials", builtin.at("materials")},

@@ -3,7 +3,7 @@
 // cylinders, spheres) with world-anchored texture coordinates, so patterns
 // line up across neighbouring pieces.
 
-#include "render/scene/scene.h"
+#include "scene/scene.h"
 
 namespace triwalk {
 

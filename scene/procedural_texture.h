@@ -3,7 +3,7 @@
 // textures so that capture draws every scene the same way. Colors are
 // display (sRGB) values; the texture stores sRGB bytes.
 
-#include "render/scene/scene.h"
+#include "scene/scene.h"
 
 #include <string>
 

@@ -1,4 +1,4 @@
-#include "render/scene/mesh_builder.h"
+#include "scene/mesh_builder.h"
 
 #include <glm/gtc/constants.hpp>
 

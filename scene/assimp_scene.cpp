@@ -1,9 +1,9 @@
-#include "render/scene/assimp_scene.h"
+#include "scene/assimp_scene.h"
 
 #include "core/image/color.h"
 #include "core/io/png_io.h"
 #include "core/support/errors.h"
-#include "render/scene/quake3_archive.h"
+#include "scene/quake3_archive.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>

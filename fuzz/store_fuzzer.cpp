@@ -6,7 +6,7 @@
 
 #include "core/io/dataset.h"
 #include "core/io/downsampled_panorama_store.h"
-#include "core/io/simplified_mesh_store.h"
+#include "core/synthesis/simplified_mesh_store.h"
 #include "core/synthesis/warp.h"
 #include "fuzz/fuzz_input.h"
 

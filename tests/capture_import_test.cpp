@@ -10,7 +10,7 @@
 #include "core/io/downsampled_panorama_store.h"
 #include "core/io/exr_io.h"
 #include "core/io/png_io.h"
-#include "core/io/simplified_mesh_store.h"
+#include "core/synthesis/simplified_mesh_store.h"
 #include "tests/analytic_scene.h"
 #include "tests/test_support.h"
 

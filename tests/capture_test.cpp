@@ -5,7 +5,7 @@
 #include "core/image/image_compare.h"
 #include "core/io/dataset.h"
 #include "core/io/png_io.h"
-#include "core/io/simplified_mesh_store.h"
+#include "core/synthesis/simplified_mesh_store.h"
 #include "render/capture/dataset_capture.h"
 #include "render/capture/panorama_capturer.h"
 #include "render/capture/truth_frame_renderer.h"

@@ -5,7 +5,7 @@
 // be written costs time only.
 
 #include "core/geometry/projection.h"
-#include "core/io/simplified_mesh_store.h"
+#include "core/synthesis/simplified_mesh_store.h"
 #include "tests/analytic_scene.h"
 #include "tests/test_support.h"
 

@@ -1,7 +1,7 @@
 #include "app/bench/bench_groups.h"
 #include "app/setup/walkthrough_setup.h"
 #include "core/geometry/camera_path.h"
-#include "core/io/simplified_mesh_store.h"
+#include "core/synthesis/simplified_mesh_store.h"
 #include "render/walkthrough/frame_scale.h"
 #include "render/walkthrough/walkthrough_renderer.h"
 

@@ -9,11 +9,11 @@
 #include "core/image/image_annotation.h"
 #include "core/io/dataset.h"
 #include "core/io/png_io.h"
-#include "core/io/simplified_mesh_store.h"
 #include "core/io/staged_directory.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
 #include "core/synthesis/judged_reconstruction.h"
+#include "core/synthesis/simplified_mesh_store.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,8 +1,8 @@
 #include "app/setup/scene_loading.h"
 
 #include "app/setup/option_checks.h"
-#include "core/support/errors.h"
 #include "core/io/json_fields.h"
+#include "core/support/errors.h"
 #include "scene/floor_plan.h"
 #include "scene/scene_description.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 // What the data set's stores share (the simplified meshes of
-// core/io/simplified_mesh_store.h, the downsampled panoramas of
+// core/synthesis/simplified_mesh_store.h, the downsampled panoramas of
 // core/io/downsampled_panorama_store.h): files triwalk derives from a data
 // set's views and keeps in a folder of it, to be read back instead of
 // computed again. A file is a header (DerivedFileHeader) and its contents,

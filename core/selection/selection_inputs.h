@@ -5,14 +5,14 @@
 // every 1024x512 EXR, downsample it and simplify it (19 s of the main job's
 // decimation). Capture and import write each view once, with its panorama
 // in memory, so they keep both in the data set's stores
-// (core/io/downsampled_panorama_store.h, core/io/simplified_mesh_store.h)
+// (core/io/downsampled_panorama_store.h, core/synthesis/simplified_mesh_store.h)
 // at the selection's defaults, and the decimation reads them back.
 
 #include "core/image/image.h"
 #include "core/io/dataset.h"
 #include "core/io/downsampled_panorama_store.h"
-#include "core/io/simplified_mesh_store.h"
 #include "core/selection/triangle_error.h"
+#include "core/synthesis/simplified_mesh_store.h"
 
 #include <filesystem>
 

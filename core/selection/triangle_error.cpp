@@ -2,10 +2,10 @@
 
 #include "core/image/color.h"
 #include "core/io/downsampled_panorama_store.h"
-#include "core/io/simplified_mesh_store.h"
-#include "core/synthesis/blended_row_error.h"
 #include "core/support/errors.h"
 #include "core/support/progress.h"
+#include "core/synthesis/blended_row_error.h"
+#include "core/synthesis/simplified_mesh_store.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

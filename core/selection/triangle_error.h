@@ -152,7 +152,7 @@ enum class LoadedViews { Samples, SamplesAndProbes };
 // Where DatasetTriangleErrors found its views: copies at the error width
 // read from the data set's store or made from the EXR files, simplified
 // meshes read or simplified (core/io/downsampled_panorama_store.h,
-// core/io/simplified_mesh_store.h).
+// core/synthesis/simplified_mesh_store.h).
 struct ViewLoads {
   int panoramasRead = 0, panoramasDownsampled = 0;
   int meshesRead = 0, meshesSimplified = 0;

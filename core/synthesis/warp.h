@@ -78,7 +78,7 @@ const char* sourceMeshName(SourceMesh mesh);
 // A source's simplified triangles in its grid's vertex numbering, surface
 // and sky apart: what meshoptimizer computes (the costly part of preparing
 // a simplified source) and what a data set's mesh store keeps
-// (core/io/simplified_mesh_store.h). With them, the source's orphans
+// (core/synthesis/simplified_mesh_store.h). With them, the source's orphans
 // (WarpSource::orphan), ascending: the grid's stretch test finds them, so
 // a source made from stored triangles needs no stretch test.
 struct SimplifiedTriangles {

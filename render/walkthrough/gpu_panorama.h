@@ -66,14 +66,14 @@ struct PreparedPanorama {
 };
 
 // The walking mesh of a simplified reference: its triangles as indices
-// into the source's vertices (core/io/simplified_mesh_store.h keeps them),
+// into the source's vertices (core/synthesis/simplified_mesh_store.h keeps them),
 // and the largest frame scale that draws them.
 struct WalkingMesh {
   std::vector<uint32_t> triangles;
   float scale = 0.0f;
 };
 
-// source is panorama's warp source (core/io/simplified_mesh_store.h makes
+// source is panorama's warp source (core/synthesis/simplified_mesh_store.h makes
 // it from a data set, with stored simplified triangles); walking, if
 // given, a simplified source's walking mesh.
 PreparedPanorama preparePanorama(const Panorama& panorama, float yawRadians, const WarpSource& source,

@@ -9,7 +9,7 @@
 // data set's mesh store, so a reference is simplified once, ever.
 
 #include "core/io/dataset.h"
-#include "core/io/simplified_mesh_store.h"
+#include "core/synthesis/simplified_mesh_store.h"
 #include "render/walkthrough/gpu_panorama.h"
 
 #include <condition_variable>

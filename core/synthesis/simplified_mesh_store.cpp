@@ -1,4 +1,4 @@
-#include "core/io/simplified_mesh_store.h"
+#include "core/synthesis/simplified_mesh_store.h"
 
 #include "core/geometry/projection.h"
 #include "core/support/errors.h"

@@ -581,6 +581,32 @@ TEST_CASE("holes the triangle's references leave are resolved from the neighbour
   if (renderer.warper().countHoles().holesBefore == 0) CHECK(open.statistics.fallbackDrawn == 0);
 }
 
+TEST_CASE("a frame draws the same when its references do not fit the panorama cache's budget") {
+  // The holes frame of the test above: three references and two
+  // neighbours'. Under a budget of one byte every panorama is over it, and
+  // the five a frame draws must all stay resident while it is drawn: with
+  // only the triangle's three kept, loading the second neighbour evicted
+  // the first, whose freed buffers the frame then drew (a crash on
+  // 4096-pixel captures under the default budget; here the frame differs,
+  // and the sanitizers report the use after free).
+  SmallBuiltinWalk walk;
+  PanoramaCache tightCache{walk.dataset, WarpOptions{}, 1};
+  WalkthroughRenderer tight{walk.mesh, tightCache, 320, 180};
+  const PinholeCamera camera = SmallBuiltinWalk::camera({6.4f, 1.1f, 1.6f}, 95.0f);
+  GpuWarpSettings settings;
+  settings.holes = HoleMode::Mark;
+  const WalkthroughRenderer::Frame roomyFrame = walk.renderer.render(camera, settings, true);
+  const Rgb8Image roomy = walk.renderer.warper().readPixels();
+  const WalkthroughRenderer::Frame tightFrame = tight.render(camera, settings, true);
+  const Rgb8Image drawn = tight.warper().readPixels();
+  REQUIRE(tightFrame.neighbours.size() == 2);
+  CHECK(tightFrame.statistics.fallbackDrawn == 2);
+  CHECK(roomyFrame.neighbours == tightFrame.neighbours);
+  // All five stay resident however far over the budget they are.
+  CHECK(tightCache.statistics().resident == 5);
+  CHECK(drawn.pixels == roomy.pixels);
+}
+
 TEST_CASE("golden frames: the built-in scene captured small and walked through renders as committed") {
   // Regenerate with: TRIWALK_UPDATE_GOLDEN=1 build/release/tests/triwalk_render_tests -tc="golden*"
   SmallBuiltinWalk walk;

@@ -28,7 +28,7 @@ void PanoramaCache::request(std::span<const int> samples) {
   {
     std::lock_guard lock(mutex_);
     wanted_.assign(samples.begin(), samples.end());
-    pinned_.assign(samples.begin(), samples.begin() + ptrdiff_t(std::min<size_t>(samples.size(), 3)));
+    pinned_.assign(samples.begin(), samples.end());
   }
   wake_.notify_all();
 }
@@ -132,7 +132,12 @@ const GpuPanorama* PanoramaCache::find(int sample) {
   resident_[sample] = std::move(panorama);
   recency_.push_front(sample);
   std::vector<int> evicted;
-  // Evict the least recently used, never one the current frame needs.
+  // Evict the least recently used, never one the current frame may draw
+  // (its triangle's and the neighbours' for its holes, all requested): a
+  // frame holds their pointers until it is drawn. Pinning only the
+  // triangle's three let the third neighbour evict the first when six
+  // references did not fit the budget (4096-pixel captures under the
+  // default 1 GiB), and the frame drew from freed memory.
   for (auto it = recency_.end(); residentBytes_ > budgetBytes_ && it != recency_.begin();) {
     --it;
     if (*it == sample || std::find(pinned.begin(), pinned.end(), *it) != pinned.end()) continue;

@@ -28,8 +28,9 @@ namespace triwalk {
 
 class PanoramaCache {
 public:
-  // budgetBytes bounds the resident GPU panoramas (at least the most
-  // recently requested ones stay). walkingScale > 0: simplified references
+  // budgetBytes bounds the resident GPU panoramas, except that every
+  // sample of the latest request stays resident (a frame draws from
+  // them), however large they are. walkingScale > 0: simplified references
   // also get the walking mesh for frames at or below that scale
   // (preparePanorama).
   PanoramaCache(const Dataset& dataset, const WarpOptions& options, size_t budgetBytes, float walkingScale = 0.0f);
@@ -37,7 +38,9 @@ public:
   PanoramaCache(const PanoramaCache&) = delete;
   PanoramaCache& operator=(const PanoramaCache&) = delete;
 
-  // The samples wanted now, most wanted first (replaces earlier wishes).
+  // The samples wanted now, most wanted first (replaces earlier wishes):
+  // every one a frame may draw, for none of them is evicted until the next
+  // request.
   void request(std::span<const int> samples);
   // GL thread: the panorama if it is ready (uploading it if it was
   // prepared), else nullptr; never waits for the disk. Throws InputError
@@ -75,7 +78,7 @@ private:
   std::condition_variable prepared_;  // GL thread: something was prepared
   std::deque<int> wanted_;
   std::deque<int> idleWork_;  // simplifyWhenIdle
-  std::vector<int> pinned_;  // the latest request, never evicted
+  std::vector<int> pinned_;  // the latest request (what a frame may draw), never evicted
   std::map<int, std::shared_ptr<const PreparedPanorama>> ready_;
   std::map<int, std::string> failures_;
   std::set<int> residentSamples_;  // mirror of resident_ for the loader

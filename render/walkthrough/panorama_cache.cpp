@@ -135,9 +135,9 @@ const GpuPanorama* PanoramaCache::find(int sample) {
   // Evict the least recently used, never one the current frame may draw
   // (its triangle's and the neighbours' for its holes, all requested): a
   // frame holds their pointers until it is drawn. Pinning only the
-  // triangle's three let the third neighbour evict the first when six
-  // references did not fit the budget (4096-pixel captures under the
-  // default 1 GiB), and the frame drew from freed memory.
+  // triangle's three let a neighbour loaded later evict one loaded before
+  // when six references did not fit the budget (4096-pixel captures under
+  // the default 1 GiB), and the frame drew from freed memory.
   for (auto it = recency_.end(); residentBytes_ > budgetBytes_ && it != recency_.begin();) {
     --it;
     if (*it == sample || std::find(pinned.begin(), pinned.end(), *it) != pinned.end()) continue;

@@ -1,7 +1,8 @@
 // What every reference's layer writes (warp_layer_grid.frag,
 // warp_layer_simplified.frag): its nearest surface per pixel (the depth
-// test), linear colour and 1 / distance (interpolated perspective-correctly,
-// as the CPU reference does), and the layer's reliability at the pixel
+// test), linear colour and 1 / distance (of the world point interpolated
+// perspective-correctly, as the CPU reference measures it; writeLayer),
+// and the layer's reliability at the pixel
 // (core/synthesis/warp_reliability.h, the same formula), packed into one
 // target (warp_layer_texel.glsl): on llvmpipe a second render target costs
 // more than the packing. 1 / distance -1 (the clear value) means
@@ -13,7 +14,7 @@
 #include "warp_layer_texel.glsl"
 uniform vec3 sourcePosition;
 uniform vec3 cameraPosition;
-in float inverseDistance;
+in float finite;  // 1 on a surface, 0 in the sky (warp_layer.vert)
 in vec3 worldPoint;
 layout(location = 0) out uvec4 layer;
 
@@ -36,15 +37,15 @@ float fringeReliability(float reliability, float fringe) {
 
 // fringe: the source's silhouette fringe flags interpolated at the pixel.
 // The inverse distance written is that of the interpolated world point,
-// exact on the triangle's plane; the interpolated 1 / distance is not, and
+// exact on the triangle's plane; an interpolated 1 / distance is not, and
 // across a simplified triangle metres wide it was off by several percent,
 // more than the blend interval: a wall seen by two references counted as
 // two surfaces, and the nearer-seeming one's silhouette fringe was drawn
-// alone. Interpolated, it still tells sky (0) from surface.
+// alone.
 void writeLayer(vec3 color, float fringe) {
   vec3 normal = cross(dFdx(worldPoint), dFdy(worldPoint));
-  bool surface = inverseDistance > 0.0;
+  bool surface = finite > 0.0;
   float reliability = surface ? warpReliability(worldPoint, normal) : 1.0;
-  float exactInverseDistance = surface ? 1.0 / length(worldPoint - cameraPosition) : 0.0;
-  layer = warpLayerTexel(color, exactInverseDistance, fringeReliability(reliability, fringe));
+  float inverseDistance = surface ? 1.0 / length(worldPoint - cameraPosition) : 0.0;
+  layer = warpLayerTexel(color, inverseDistance, fringeReliability(reliability, fringe));
 }

@@ -19,7 +19,7 @@ uniform bool explicitVertices;
 layout(location = 0) in vec4 vertexPoint;
 
 out vec3 vertexColor;
-out float inverseDistance;  // 1 / metres from the camera; 0 at infinity
+out float finite;           // 1 for a surface point, 0 for a direction at infinity (sky)
 out vec3 worldPoint;        // the surface point, for the layer's reliability (a direction at infinity)
 out float vertexFringe;     // the pixel's silhouette fringe flag (core/synthesis/silhouette_fringe.h): 1 - the colour's alpha
 
@@ -29,7 +29,7 @@ void main() {
     vertexColor = vec3(0.0);
     worldPoint = vertexPoint.xyz;
     gl_Position = viewProjection * vertexPoint;
-    inverseDistance = vertexPoint.w == 0.0 ? 0.0 : 1.0 / length(vertexPoint.xyz - cameraPosition);
+    finite = vertexPoint.w == 0.0 ? 0.0 : 1.0;
     return;
   }
   int pixels = panoramaSize.x * panoramaSize.y;
@@ -50,12 +50,12 @@ void main() {
   }
   if (isinf(distance)) {
     gl_Position = viewProjection * vec4(direction, 0.0);
-    inverseDistance = 0.0;
+    finite = 0.0;
     worldPoint = direction;
   } else {
     vec3 world = sourcePosition + distance * direction;
     gl_Position = viewProjection * vec4(world, 1.0);
-    inverseDistance = 1.0 / length(world - cameraPosition);
+    finite = 1.0;
     worldPoint = world;
   }
 }

@@ -10,7 +10,7 @@ uniform float panoramaYaw;
 
 void main() {
   vec2 size = vec2(panoramaSize);
-  vec2 imagePoint = equirectImagePoint(inverseDistance > 0.0 ? worldPoint - sourcePosition : worldPoint, size, panoramaYaw);
+  vec2 imagePoint = equirectImagePoint(finite > 0.0 ? worldPoint - sourcePosition : worldPoint, size, panoramaYaw);
   // Alpha: 1 - the silhouette fringe flag, interpolated as the colour is.
   vec4 texel = textureLod(colorTexture, imagePoint / size, 0.0);
   writeLayer(texel.rgb, 1.0 - texel.a);

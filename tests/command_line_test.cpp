@@ -354,6 +354,22 @@ TEST_CASE("suite: each count selected with the selection's blend weights and wid
   const nlohmann::json lattice = run(" --error-stride 2");
   CHECK(lattice["settings"]["error_stride"].get<int>() == 2);
   CHECK(lattice["probe_errors"]["uniform"] == byDefault["probe_errors"]["uniform"]);
+  // The paper's rules for the selection (as decimate --preset paper), the
+  // evaluation unchanged; an option beside the preset overrides it.
+  const nlohmann::json paper = run(" --preset paper");
+  CHECK(paper["settings"]["preset"] == "paper");
+  CHECK(paper["settings"]["cost"] == "centroid");
+  CHECK(paper["settings"]["area_weighted_cost"] == false);
+  CHECK(paper["settings"]["recosting"] == "eager");
+  CHECK(paper["settings"]["refine_radius"] == 0.0);
+  CHECK(paper["settings"]["pixel_weighting"] == "uniform");
+  CHECK(byDefault["settings"]["pixel_weighting"] != "uniform");
+  CHECK(byDefault["settings"]["preset"] == "default");
+  CHECK(paper["probe_errors"]["uniform"] == byDefault["probe_errors"]["uniform"]);
+  CHECK(paper["probe_errors"]["edge_collapse"] != byDefault["probe_errors"]["edge_collapse"]);
+  const nlohmann::json paperReliability = run(" --preset paper --selection-blend-weights reliability");
+  CHECK(paperReliability["settings"]["blend_weights"] == "reliability");
+  CHECK(paperReliability["settings"]["cost"] == "centroid");
 
   // Tiles forced: each count selected in tiles and stitched, evaluated as before.
   const nlohmann::json tiled = run(" --tiles 2");

@@ -20,6 +20,7 @@
 #include "app/setup/decimation_options.h"
 #include "app/setup/option_checks.h"
 #include "app/setup/scene_capture.h"
+#include "app/setup/selection_preset.h"
 #include "app/setup/tile_jobs.h"
 #include "core/io/atomic_file.h"
 #include "core/io/json_fields.h"
@@ -268,6 +269,7 @@ void registerSuiteCommand(CLI::App& app) {
     bool reuseSelections = false;
     bool quiet = false;
     int tiles = 1;
+    std::string preset = "default";
     SelectionArguments selection;
     std::string selectionBlendWeights, selectionSourceMesh;  // decimate's defaults, set below
     int selectionErrorWidth = 0;  // 0: the evaluation's
@@ -291,6 +293,18 @@ void registerSuiteCommand(CLI::App& app) {
                       "selection against one decimation; default 1: one decimation")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));
+  // Before the options it sets, so that those given beside it override it.
+  command
+      ->add_option_function<std::string>(
+          "--preset",
+          [arguments](const std::string& name) {
+            applySelectionPreset(name, arguments->selection);
+            if (name == "paper") arguments->selectionBlendWeights = "distance";
+            arguments->preset = name;
+          },
+          "How every count is selected, as decimate --preset selects (default, paper or fast; the suite stops at "
+          "its counts, not at the paper's threshold); the evaluation stays the same")
+      ->check(CLI::IsMember({"default", "paper", "fast"}));
   addSelectionOptions(*command, arguments->selection);
   command->add_option("--selection-blend-weights", arguments->selectionBlendWeights,
                       "Blend weights of the errors the selection is made with (--blend-weights: those it is "
@@ -317,10 +331,13 @@ void registerSuiteCommand(CLI::App& app) {
         throw InputError("--only", "no scene '" + name + "' in " + a.spec);
       }
     }
+    // The selection's errors: the evaluation's, with the preset's rules.
+    ErrorArguments selectionErrorArguments = a.errors;
+    applyPresetErrorRules(a.preset, selectionErrorArguments);
     {
       // --error-stride against the options, before anything is written.
       TriangleErrorSettings selectionLattice;
-      selectionLattice.synthesis = synthesisOptions(a.errors.quality);
+      selectionLattice.synthesis = synthesisOptions(selectionErrorArguments.quality);
       applyErrorStride(a.selection, selectionLattice);
     }
     const std::filesystem::path out = a.out;
@@ -351,7 +368,7 @@ void registerSuiteCommand(CLI::App& app) {
       const Dataset dataset = Dataset::open(datasetDirectory);
       if (dataset.probeCount() < 2) throw InputError(dataset.manifestPath().string(), "the suite needs probes");
       const TriangleErrorSettings settings = triangleErrorSettings(a.errors, dataset);
-      TriangleErrorSettings selectionErrorSettings = settings;
+      TriangleErrorSettings selectionErrorSettings = triangleErrorSettings(selectionErrorArguments, dataset);
       selectionErrorSettings.synthesis.blend.weights = parseBlendWeights(a.selectionBlendWeights);
       selectionErrorSettings.synthesis.warp.mesh = parseSourceMesh(a.selectionSourceMesh);
       applyErrorStride(a.selection, selectionErrorSettings);
@@ -387,7 +404,7 @@ void registerSuiteCommand(CLI::App& app) {
           const SelectionSettings selectionOptions = selectionSettings(a.selection, 0.0, count);
           if (a.tiles > 1) {
             const auto began = std::chrono::steady_clock::now();
-            const TilePlanRequest request{describeSelectionRecipe({selectionErrorSettings, selectionOptions}), a.tiles,
+            const TilePlanRequest request{describeSelectionRecipe({selectionErrorSettings, selectionOptions, a.preset}), a.tiles,
                                           defaultJobs()};
             const std::filesystem::path work = std::filesystem::path(selectionFile).concat(".tiles");
             std::optional<StitchResult> stitched = decimateInTiles(dataset, request, work, a.quiet);
@@ -400,7 +417,7 @@ void registerSuiteCommand(CLI::App& app) {
           }
           if (!selectionErrors) selectionErrors.emplace(dataset, selectionErrorSettings, LoadedViews::Samples, a.quiet);
           SelectionRun run = selectReferences(dataset, *selectionErrors, selectionOptions, a.quiet);
-          run.selection.settings = describeSelectionRecipe({selectionErrorSettings, selectionOptions});
+          run.selection.settings = describeSelectionRecipe({selectionErrorSettings, selectionOptions, a.preset});
           writeSelection(selectionFile, run.selection, dataset);
           selections.push_back(std::move(run.selection));
           selectionSeconds.back() = run.collapseSeconds + run.refinementSeconds;
@@ -435,7 +452,7 @@ void registerSuiteCommand(CLI::App& app) {
             selection.method = method;
             selection.samples = mesh.vertices();
             selection.triangles = mesh.triangles();
-            selection.settings = describeSelectionRecipe({selectionErrorSettings, selectionOptions});
+            selection.settings = describeSelectionRecipe({selectionErrorSettings, selectionOptions, a.preset});
             writeSelection(fileOf(method), selection, dataset);
             return selection;
           };

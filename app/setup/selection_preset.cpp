@@ -5,8 +5,6 @@
 
 namespace triwalk {
 
-namespace {
-
 // The paper's rules (docs/DESIGN.md, "Departures from the paper"), as far
 // as triwalk has them: the blend interval stays triwalk's, relative to the
 // nearest distance (the only interval triwalk has), the errors are measured
@@ -14,32 +12,32 @@ namespace {
 // warp is not the paper's splats and leaves cracks at every magnification,
 // so its errors are not on the paper's scale (on the main job no collapse
 // costs under 1.85 with it: the cheapest 13.1).
-void applyPaperRules(DecimationArguments& arguments) {
-  SelectionArguments& selection = arguments.selection;
-  selection.cost = "centroid";  // keeps the hull: the centroid cost implies the fixed boundary
-  selection.unweightedCost = true;
-  selection.recosting = "eager";
-  selection.refineRadius = 0.0;
-  selection.exchanges = 0;
-  QualityArguments& quality = arguments.errors.quality;
-  quality.blendWeights = "distance";
-  quality.holes = "black";
-  quality.pixelWeighting = "uniform";
-  arguments.errors.destinations = "centroid";
-  arguments.stopping.presetMaxError = kPaperMaxError;
-}
-
-}  // namespace
-
-void applyPreset(const std::string& name, DecimationArguments& arguments) {
-  if (name == "default") return;
+void applySelectionPreset(const std::string& name, SelectionArguments& selection) {
   if (name == "paper") {
-    applyPaperRules(arguments);
+    selection.cost = "centroid";  // keeps the hull: the centroid cost implies the fixed boundary
+    selection.unweightedCost = true;
+    selection.recosting = "eager";
+    selection.refineRadius = 0.0;
+    selection.exchanges = 0;
   } else if (name == "fast") {
-    arguments.selection.errorStride = 2;
-  } else {
+    selection.errorStride = 2;
+  } else if (name != "default") {
     throw InputError("--preset", "unknown preset '" + name + "' (use default, paper or fast)");
   }
+}
+
+void applyPresetErrorRules(const std::string& name, ErrorArguments& errors) {
+  if (name != "paper") return;
+  errors.quality.blendWeights = "distance";
+  errors.quality.holes = "black";
+  errors.quality.pixelWeighting = "uniform";
+  errors.destinations = "centroid";
+}
+
+void applyPreset(const std::string& name, DecimationArguments& arguments) {
+  applySelectionPreset(name, arguments.selection);
+  applyPresetErrorRules(name, arguments.errors);
+  if (name == "paper") arguments.stopping.presetMaxError = kPaperMaxError;
   arguments.preset = name;
 }
 

@@ -10,6 +10,8 @@
 namespace triwalk {
 
 struct DecimationArguments;
+struct ErrorArguments;
+struct SelectionArguments;
 
 // The presets, by the name --preset takes:
 //   default  triwalk's measured best (docs/DESIGN.md);
@@ -27,5 +29,12 @@ void addPresetOption(CLI::App& command, DecimationArguments& arguments);
 
 // Sets arguments to the preset's values; InputError for an unknown name.
 void applyPreset(const std::string& name, DecimationArguments& arguments);
+// The two halves of a preset apart, for the suite, whose selections take
+// a preset while its evaluation stays the same: how references are
+// selected (InputError for an unknown name), and the errors they are
+// selected with (the paper's weights, holes, pixel weights and error
+// destinations; nothing for the others).
+void applySelectionPreset(const std::string& name, SelectionArguments& selection);
+void applyPresetErrorRules(const std::string& name, ErrorArguments& errors);
 
 }  // namespace triwalk

@@ -55,8 +55,9 @@ TEST_CASE("the two boundary rules: the paper's keeps a hull corner, the shrinkin
   }
 }
 
-TEST_CASE("an edge tries either end, then the free sample nearest its midpoint, and with the one-ring every free sample "
-          "inside the two ends' triangles") {
+TEST_CASE(
+    "an edge tries either end, then the free sample nearest its midpoint, and with the one-ring every free sample "
+    "inside the two ends' triangles") {
   // References: the corners of a 5 x 3 grid and its centre (2,1) = 7.
   const std::vector<glm::dvec2> positions = testing::unitGrid(5, 3);
   const std::vector<int> references = {0, 2, 7, 12, 14};

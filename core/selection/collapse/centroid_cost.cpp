@@ -26,10 +26,11 @@ void CentroidCost::ensureErrors(const std::vector<const CollapsePlan*>& plans, P
   }
   if (missing.empty()) return;
   // Progress is shown for the first costing, thousands of errors.
-  const std::vector<double> computed = computeInChunks(
-      std::span<const Triangle>(missing), progress, [&](std::span<const Triangle> batch, std::span<double> batchErrors) {
-        errors_.computeErrors(batch, batchErrors);
-      });
+  const std::vector<double> computed =
+      computeInChunks(std::span<const Triangle>(missing), progress,
+                      [&](std::span<const Triangle> batch, std::span<double> batchErrors) {
+                        errors_.computeErrors(batch, batchErrors);
+                      });
   for (size_t i = 0; i < missing.size(); ++i) cache_[triangleKey(missing[i])] = computed[i];
   statistics_.errorsComputed += missing.size();
 }

@@ -16,7 +16,8 @@ namespace triwalk {
 
 class CentroidCost : public CostModel {
 public:
-  CentroidCost(const CollapseMesh& mesh, TriangleErrorSource& errors, bool areaWeighted, DecimationStatistics& statistics);
+  CentroidCost(const CollapseMesh& mesh, TriangleErrorSource& errors, bool areaWeighted,
+               DecimationStatistics& statistics);
 
   void prepare(int, int, CollapsePlan&) const override {}
   void ensureErrors(const std::vector<const CollapsePlan*>& plans, ProgressReporter* progress = nullptr) override;

@@ -8,12 +8,18 @@ namespace triwalk {
 
 const char* placementName(PlacementKind kind) {
   switch (kind) {
-    case PlacementKind::First: return "first";
-    case PlacementKind::Second: return "second";
-    case PlacementKind::Midpoint: return "midpoint";
-    case PlacementKind::OneRing: return "one-ring";
-    case PlacementKind::Relocation: return "relocation";
-    case PlacementKind::Removal: return "removal";
+    case PlacementKind::First:
+      return "first";
+    case PlacementKind::Second:
+      return "second";
+    case PlacementKind::Midpoint:
+      return "midpoint";
+    case PlacementKind::OneRing:
+      return "one-ring";
+    case PlacementKind::Relocation:
+      return "relocation";
+    case PlacementKind::Removal:
+      return "removal";
   }
   return "?";
 }
@@ -35,7 +41,8 @@ std::vector<Triangle> replace(std::vector<Triangle> triangles, const std::vector
 }  // namespace
 
 std::vector<Triangle> replayForward(std::vector<Triangle> initial, std::span<const Collapse> log, size_t steps) {
-  for (size_t i = 0; i < std::min(steps, log.size()); ++i) initial = replace(std::move(initial), log[i].removed, log[i].added);
+  for (size_t i = 0; i < std::min(steps, log.size()); ++i)
+    initial = replace(std::move(initial), log[i].removed, log[i].added);
   return initial;
 }
 
@@ -49,7 +56,8 @@ std::vector<Triangle> replayBackward(std::vector<Triangle> final, std::span<cons
 
 int samplesAfter(int initialSamples, std::span<const Collapse> log, size_t steps) {
   const auto end = log.begin() + ptrdiff_t(std::min(steps, log.size()));
-  return initialSamples - int(std::count_if(log.begin(), end, [](const Collapse& c) { return c.kind != PlacementKind::Relocation; }));
+  return initialSamples -
+         int(std::count_if(log.begin(), end, [](const Collapse& c) { return c.kind != PlacementKind::Relocation; }));
 }
 
 std::optional<size_t> lastStepWithSamples(int initialSamples, std::span<const Collapse> log, int samples) {

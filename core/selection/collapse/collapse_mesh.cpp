@@ -7,14 +7,21 @@ namespace triwalk {
 
 namespace {
 
-bool hasVertex(const Triangle& t, int v) { return t[0] == v || t[1] == v || t[2] == v; }
+bool hasVertex(const Triangle& t, int v) {
+  return t[0] == v || t[1] == v || t[2] == v;
+}
 
 }  // namespace
 
 CollapseMesh::CollapseMesh(const ViewMesh& mesh)
-    : positions_(mesh.positions()), triangles_(mesh.triangles()), alive_(mesh.triangles().size(), 1),
-      incident_(mesh.positions().size()), isVertex_(mesh.positions().size(), 0), vertexCount_(mesh.vertexCount()),
-      aliveCount_(int(mesh.triangles().size())), region_(mesh.region()) {
+    : positions_(mesh.positions()),
+      triangles_(mesh.triangles()),
+      alive_(mesh.triangles().size(), 1),
+      incident_(mesh.positions().size()),
+      isVertex_(mesh.positions().size(), 0),
+      vertexCount_(mesh.vertexCount()),
+      aliveCount_(int(mesh.triangles().size())),
+      region_(mesh.region()) {
   for (size_t t = 0; t < triangles_.size(); ++t) {
     for (int v : triangles_[t]) incident_[size_t(v)].push_back(int(t));
   }

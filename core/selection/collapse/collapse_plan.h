@@ -15,9 +15,9 @@ namespace triwalk {
 
 // The served-sample cost's part of a plan (empty under the centroid cost).
 struct ServedChange {
-  std::vector<int> samples;          // whose serving triangle changes, sorted
-  std::vector<int> servedBy;         // per sample: index into added, or -1 - id of an existing triangle
-  std::vector<ServingRank> rank;     // of that triangle for the sample ({false, 0} inside)
+  std::vector<int> samples;       // whose serving triangle changes, sorted
+  std::vector<int> servedBy;      // per sample: index into added, or -1 - id of an existing triangle
+  std::vector<ServingRank> rank;  // of that triangle for the sample ({false, 0} inside)
   // Of samples, those whose errors price the collapse (index into samples,
   // sorted), each with the served weight it stands for over its own.
   std::vector<PricedSample> priced;

@@ -49,7 +49,7 @@ bool CollapseRules::planCollapse(int a, int b, int placement, PlacementKind kind
   const std::vector<int> boundaryA = mesh_.boundaryNeighbours(a), boundaryB = mesh_.boundaryNeighbours(b);
   const bool onBoundaryA = !boundaryA.empty(), onBoundaryB = !boundaryB.empty();
   const bool boundaryEdge = shared.size() == 1;
-  if (onBoundaryA && onBoundaryB && !boundaryEdge) return false;  // would pinch the mesh
+  if (onBoundaryA && onBoundaryB && !boundaryEdge) return false;   // would pinch the mesh
   if (boundaryA.size() > 2 || boundaryB.size() > 2) return false;  // a vertex the boundary passes twice
   const bool boundaryMoves = (onBoundaryA && placement != a) || (onBoundaryB && placement != b);
   if (boundaryMoves && !boundaryMayShrink() && !keepsFixedBoundary(a, b, placement, boundaryA, boundaryB)) return false;

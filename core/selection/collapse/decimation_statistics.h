@@ -6,8 +6,8 @@
 namespace triwalk {
 
 struct DecimationStatistics {
-  uint64_t errorsComputed = 0;   // triangle (or served-sample) errors evaluated
-  uint64_t cacheHits = 0;        // errors served from the cache
+  uint64_t errorsComputed = 0;  // triangle (or served-sample) errors evaluated
+  uint64_t cacheHits = 0;       // errors served from the cache
   uint64_t staleEntriesSkipped = 0;
   uint64_t edgesCosted = 0;
   uint64_t collapseChecksFailed = 0;  // popped entries whose cost had changed

@@ -23,7 +23,8 @@ std::vector<PlacementCandidate> placementCandidates(const CollapseMesh& mesh, in
       const Triangle& tri = mesh.triangle(t);
       bool inside = true;
       for (int e = 0; e < 3 && inside; ++e) {
-        inside = orientation(mesh.position(tri[size_t(e)]), mesh.position(tri[size_t((e + 1) % 3)]), mesh.position(s)) >= 0;
+        inside =
+            orientation(mesh.position(tri[size_t(e)]), mesh.position(tri[size_t((e + 1) % 3)]), mesh.position(s)) >= 0;
       }
       if (inside) {
         result.push_back({s, PlacementKind::OneRing});

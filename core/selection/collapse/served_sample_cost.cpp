@@ -12,7 +12,11 @@ namespace triwalk {
 ServedSampleCost::ServedSampleCost(const ViewMesh& dense, const CollapseMesh& mesh, ReconstructionErrorSource& errors,
                                    std::vector<double> weights, int pricedSamples, DecimationStatistics& statistics,
                                    ProgressReporter* progress)
-    : mesh_(mesh), errors_(errors), weights_(std::move(weights)), pricedSamples_(pricedSamples), statistics_(statistics) {
+    : mesh_(mesh),
+      errors_(errors),
+      weights_(std::move(weights)),
+      pricedSamples_(pricedSamples),
+      statistics_(statistics) {
   const size_t samples = size_t(mesh.sampleCount());
   if (mesh.region() && !mesh.region()->convex()) sight_.assign(samples * samples, -1);
   home_.assign(samples, -1);
@@ -45,7 +49,8 @@ void ServedSampleCost::prepare(int a, int b, CollapsePlan& plan) const {
   ServedChange& change = plan.served;
   change.samples.clear();
   change.servedBy.clear();
-  for (int t : plan.removed) change.samples.insert(change.samples.end(), served_[size_t(t)].begin(), served_[size_t(t)].end());
+  for (int t : plan.removed)
+    change.samples.insert(change.samples.end(), served_[size_t(t)].begin(), served_[size_t(t)].end());
   for (int freed : {a, b}) {
     if (freed != plan.placement) change.samples.push_back(freed);
   }
@@ -235,7 +240,8 @@ SampleReconstruction ServedSampleCost::request(const CollapsePlan& plan, size_t 
   return {sortedTriangle(servingTriangle(plan, i)), plan.served.samples[i]};
 }
 
-void ServedSampleCost::ensureSampleErrors(const std::vector<SampleReconstruction>& requests, ProgressReporter* progress) {
+void ServedSampleCost::ensureSampleErrors(const std::vector<SampleReconstruction>& requests,
+                                          ProgressReporter* progress) {
   std::vector<SampleReconstruction> missing;
   std::unordered_set<SampleKey, SampleKeyHash> queued;
   for (const SampleReconstruction& request : requests) {
@@ -247,11 +253,11 @@ void ServedSampleCost::ensureSampleErrors(const std::vector<SampleReconstruction
     missing.push_back(request);
   }
   if (missing.empty()) return;
-  const std::vector<double> computed = computeInChunks(
-      std::span<const SampleReconstruction>(missing), progress,
-      [&](std::span<const SampleReconstruction> batch, std::span<double> batchErrors) {
-        errors_.computeReconstructionErrors(batch, batchErrors);
-      });
+  const std::vector<double> computed =
+      computeInChunks(std::span<const SampleReconstruction>(missing), progress,
+                      [&](std::span<const SampleReconstruction> batch, std::span<double> batchErrors) {
+                        errors_.computeReconstructionErrors(batch, batchErrors);
+                      });
   for (size_t i = 0; i < missing.size(); ++i) {
     cache_[SampleKey{triangleKey(missing[i].references), missing[i].destination}] = computed[i];
   }

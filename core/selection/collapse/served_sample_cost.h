@@ -46,7 +46,9 @@ private:
     bool operator==(const SampleKey&) const = default;
   };
   struct SampleKeyHash {
-    size_t operator()(const SampleKey& key) const { return std::hash<uint64_t>()(key.triangle * 1000003u + uint64_t(key.sample)); }
+    size_t operator()(const SampleKey& key) const {
+      return std::hash<uint64_t>()(key.triangle * 1000003u + uint64_t(key.sample));
+    }
   };
 
   void choosePricedSamples(int a, int b, CollapsePlan& plan) const;

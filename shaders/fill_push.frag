@@ -17,6 +17,6 @@ void main() {
   ivec2 fineSize = textureSize(finer, 0);
   ivec2 coarseSize = (fineSize + 1) / 2;
   ivec2 first = 2 * topDown(ivec2(gl_FragCoord.xy), coarseSize);
-  outValue = farthestSurfaceMean(child(first, fineSize), child(first + ivec2(1, 0), fineSize), child(first + ivec2(0, 1), fineSize),
-                                 child(first + ivec2(1, 1), fineSize), vec4(1.0), epsilon);
+  outValue = farthestSurfaceMeanOfMajority(child(first, fineSize), child(first + ivec2(1, 0), fineSize), child(first + ivec2(0, 1), fineSize),
+                                           child(first + ivec2(1, 1), fineSize), vec4(1.0), epsilon);
 }

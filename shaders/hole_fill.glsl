@@ -19,3 +19,21 @@ vec4 farthestSurfaceMean(vec4 c0, vec4 c1, vec4 c2, vec4 c3, vec4 weights, float
   vec4 w = weights * vec4(lessThanEqual(knownInverse, vec4(nearestInverse * (1.0 + epsilon))));
   return (w.x * c0 + w.y * c1 + w.z * c2 + w.w * c3) / (w.x + w.y + w.z + w.w);
 }
+
+// The push's candidates with sky dropped where surfaces outnumber it
+// (weights summed): sky (q = 0) is farther than any surface, so without this
+// one sky child makes the whole coarser texel sky, and sky seen through a
+// small opening spreads over every coarser level and into holes on the wall
+// around it.
+vec4 outvotedSkyDropped(vec4 candidate, bool drop) {
+  return drop && candidate.a == 0.0 ? vec4(0.0, 0.0, 0.0, -1.0) : candidate;
+}
+
+vec4 farthestSurfaceMeanOfMajority(vec4 c0, vec4 c1, vec4 c2, vec4 c3, vec4 weights, float epsilon) {
+  vec4 inverse = vec4(c0.a, c1.a, c2.a, c3.a);
+  float sky = dot(weights, vec4(equal(inverse, vec4(0.0))));
+  float surface = dot(weights, vec4(greaterThan(inverse, vec4(0.0))));
+  bool drop = surface > sky;
+  return farthestSurfaceMean(outvotedSkyDropped(c0, drop), outvotedSkyDropped(c1, drop), outvotedSkyDropped(c2, drop),
+                             outvotedSkyDropped(c3, drop), weights, epsilon);
+}

@@ -1,6 +1,7 @@
 // The hole fill (core/synthesis/hole_fill.h) on cases with known answers:
 // a pillar's disocclusion filled from the wall behind it, frames without
-// holes left alone, frames with nothing known left unfilled.
+// holes left alone, frames with nothing known left unfilled, sky taken as
+// the farthest surface except where surfaces outnumber it.
 
 #include "core/support/errors.h"
 #include "core/synthesis/hole_fill.h"
@@ -132,6 +133,74 @@ TEST_CASE("the fill takes the farthest surface, and sky counts as farthest") {
     CHECK(statistics.unfilled == 0);
     CHECK(view.color.pixels[1] == glm::vec3(0.2f, 0.3f, 0.9f));
     CHECK((std::isinf(far) ? std::isinf(view.distance.pixels[1]) : view.distance.pixels[1] == doctest::Approx(far)));
+  }
+}
+
+namespace {
+
+constexpr glm::vec3 kWallColor(0.4f, 0.45f, 0.35f), kSkyColor(0.2f, 0.3f, 0.9f), kObjectColor(1.0f);
+
+// A 32 x 16 view of a wall 4 m away, the columns [holeBegin, holeEnd)
+// holes, sky (+inf) and a near object (1 m) where the callbacks say so.
+BlendedView wallView(int holeBegin, int holeEnd, bool (*sky)(int, int), bool (*object)(int, int)) {
+  BlendedView view{ColorImage(32, 16), ScalarImage(32, 16, 4.0f), std::vector<uint8_t>(512, 0),
+                   std::vector<uint8_t>(512, 1)};
+  for (int y = 0; y < 16; ++y) {
+    for (int x = 0; x < 32; ++x) {
+      const size_t i = size_t(y) * 32 + size_t(x);
+      view.color.pixels[i] = kWallColor;
+      if (sky(x, y)) {
+        view.color.pixels[i] = kSkyColor;
+        view.distance.pixels[i] = INFINITY;
+      }
+      if (object(x, y)) {
+        view.color.pixels[i] = kObjectColor;
+        view.distance.pixels[i] = 1.0f;
+      }
+      if (x >= holeBegin && x < holeEnd) {
+        view.hole[i] = 1;
+        view.color.pixels[i] = glm::vec3(0.0f);
+        view.distance.pixels[i] = 0.0f;
+      }
+    }
+  }
+  return view;
+}
+
+}  // namespace
+
+TEST_CASE("sky seen through a small opening does not spread into a hole on the wall around it") {
+  // A 2 x 2 opening onto the sky, two pixels from a hole 16 columns wide:
+  // taken as the farthest surface at every coarser level, its sky would
+  // fill the hole's left half (as it filled a wall on oacmpdm3).
+  BlendedView view = wallView(
+      8, 24, [](int x, int y) { return x >= 4 && x <= 5 && y >= 6 && y <= 7; }, [](int, int) { return false; });
+  const std::vector<uint8_t> holes = view.hole;
+  const HoleFillStatistics statistics = fillHoles(view, 0.05f);
+  CHECK(statistics.holesBefore == 256);
+  CHECK(statistics.unfilled == 0);
+  for (size_t i = 0; i < holes.size(); ++i) {
+    if (!holes[i]) continue;
+    INFO("pixel " << i % 32 << ", " << i / 32);
+    CHECK(glm::length(view.color.pixels[i] - kWallColor) < 1e-5f);
+    CHECK(view.distance.pixels[i] == doctest::Approx(4.0f));
+  }
+}
+
+TEST_CASE("a hole between a near object and open sky is filled with the sky") {
+  // The disocclusion beside an object seen against the sky: sky is the
+  // farthest surface, and here not outnumbered.
+  BlendedView view = wallView(
+      12, 20, [](int x, int) { return x >= 20; }, [](int x, int) { return x < 12; });
+  const std::vector<uint8_t> holes = view.hole;
+  const HoleFillStatistics statistics = fillHoles(view, 0.05f);
+  CHECK(statistics.holesBefore == 128);
+  for (size_t i = 0; i < holes.size(); ++i) {
+    if (!holes[i]) continue;
+    INFO("pixel " << i % 32 << ", " << i / 32);
+    INFO("colour " << view.color.pixels[i].r << " " << view.color.pixels[i].g << " " << view.color.pixels[i].b);
+    CHECK(glm::length(view.color.pixels[i] - kSkyColor) < 1e-5f);
+    CHECK(std::isinf(view.distance.pixels[i]));
   }
 }
 

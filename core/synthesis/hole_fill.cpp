@@ -72,6 +72,25 @@ glm::vec4 farthestSurfaceMean(const glm::vec4* candidates, const float* weights,
   return sum / weightSum;
 }
 
+// The push's mean: sky (q = 0) is farther than any surface, so a single
+// sky child would make the whole coarser texel sky, and sky seen through a
+// small opening would spread over every coarser level and into holes on
+// the wall around it; sky counts only where it is not outnumbered by
+// surfaces (weights summed), as in the shaders.
+glm::vec4 farthestSurfaceMeanOfMajority(glm::vec4* candidates, const float* weights, int count, float epsilon) {
+  float sky = 0.0f, surface = 0.0f;
+  for (int i = 0; i < count; ++i) {
+    if (candidates[i].a == 0.0f) sky += weights[i];
+    if (candidates[i].a > 0.0f) surface += weights[i];
+  }
+  if (surface > sky) {
+    for (int i = 0; i < count; ++i) {
+      if (candidates[i].a == 0.0f) candidates[i] = glm::vec4(0.0f, 0.0f, 0.0f, kUnknown);
+    }
+  }
+  return farthestSurfaceMean(candidates, weights, count, epsilon);
+}
+
 Level push(const Level& finer, float epsilon) {
   Level coarser{(finer.width + 1) / 2, (finer.height + 1) / 2, {}};
   coarser.texels.resize(size_t(coarser.width) * size_t(coarser.height));
@@ -86,7 +105,8 @@ Level push(const Level& finer, float epsilon) {
           if (cx < finer.width && cy < finer.height) children[count++] = finer.at(cx, cy);
         }
       }
-      coarser.texels[size_t(y) * size_t(coarser.width) + size_t(x)] = farthestSurfaceMean(children, weights, count, epsilon);
+      coarser.texels[size_t(y) * size_t(coarser.width) + size_t(x)] =
+          farthestSurfaceMeanOfMajority(children, weights, count, epsilon);
     }
   });
   return coarser;

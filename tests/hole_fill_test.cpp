@@ -172,7 +172,7 @@ BlendedView wallView(int holeBegin, int holeEnd, bool (*sky)(int, int), bool (*o
 TEST_CASE("sky seen through a small opening does not spread into a hole on the wall around it") {
   // A 2 x 2 opening onto the sky, two pixels from a hole 16 columns wide:
   // taken as the farthest surface at every coarser level, its sky would
-  // fill the hole's left half (as it filled a wall on oacmpdm3).
+  // fill part of the hole (as it filled a wall on oacmpdm3).
   BlendedView view = wallView(
       8, 24, [](int x, int y) { return x >= 4 && x <= 5 && y >= 6 && y <= 7; }, [](int, int) { return false; });
   const std::vector<uint8_t> holes = view.hole;

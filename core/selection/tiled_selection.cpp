@@ -277,15 +277,21 @@ SeamStep runSeamStep(const Dataset& dataset, const TilePlan& plan, const Selecti
   options.frozen = frozen;
   options.sampleWeights = restricted(weights, tile.samples);
   // The step takes out what it was given and no more, with or without a
-  // target (stitchTiles says why).
+  // target (stitchTiles says why). A step given nothing to take out (every
+  // step without a target) only moves: building the decimator would price
+  // every edge of the tile for collapses it never makes.
   options.targetSamples = std::max(3, mesh.vertexCount() - std::min(removals, int(freeReferences)));
   options.maxError = 0.0;
-  std::unique_ptr<EdgeCollapseDecimator> decimator =
-      datasetDecimator(part, mesh.triangles(), DecimationErrors{&errors, &sampleErrors}, options);
+  std::vector<Triangle> triangles = mesh.triangles();
+  std::vector<Collapse> collapses;
   if (options.targetSamples < mesh.vertexCount()) {
+    const std::unique_ptr<EdgeCollapseDecimator> decimator =
+        datasetDecimator(part, mesh.triangles(), DecimationErrors{&errors, &sampleErrors}, options);
     if (decimator->run() == StopReason::Interrupted) throw Interrupted();
+    triangles = decimator->mesh().triangles();
+    collapses = decimator->log();
   }
-  step.collapses = decimator->log().size();
+  step.collapses = collapses.size();
 
   RefinementOptions refinement = settings.selection.refinement;
   refinement.region = &region;
@@ -293,7 +299,7 @@ SeamStep runSeamStep(const Dataset& dataset, const TilePlan& plan, const Selecti
   refinement.frozen = frozen;
   refinement.maxExchanges = int(freeReferences);
   const RefinementResult refined =
-      refineSelection(mesh.positions(), decimator->mesh().triangles(), sampleErrors, refinement, nullptr);
+      refineSelection(mesh.positions(), triangles, sampleErrors, refinement, nullptr);
   step.moves = refined.moves.size();
   // What the collapses and moves did, replayed on the references the step
   // started from: a reference in no triangle of the tile's own
@@ -306,7 +312,7 @@ SeamStep runSeamStep(const Dataset& dataset, const TilePlan& plan, const Selecti
     if (change.kind != PlacementKind::Relocation) kept[size_t(change.second)] = 0;
     kept[size_t(change.placement)] = 1;
   };
-  for (const Collapse& collapse : decimator->log()) replay(collapse);
+  for (const Collapse& collapse : collapses) replay(collapse);
   for (const Collapse& move : refined.moves) replay(move);
   for (size_t i = 0; i < band.size(); ++i) {
     const auto local = std::lower_bound(tile.samples.begin(), tile.samples.end(), band[i]) - tile.samples.begin();

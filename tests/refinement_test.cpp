@@ -266,6 +266,71 @@ TEST_CASE("refinement starts from the Delaunay mesh of a decimated mesh's refere
   }
 }
 
+TEST_CASE("samples of weight 0 are not judged: a margin no move can serve better does not decide whether moves are kept") {
+  // A tile's situation (core/selection/tiled_selection.cpp, runTile): an
+  // 8 x 5 grid whose right column (x = 7) is margin, frozen, with two
+  // frozen references at its ends; the core's four references crowd the
+  // corner (0, 0)-(1, 1). The decimation left the margin's triangle out,
+  // so its three samples are served by the triangles beside it, well;
+  // every other triangle serves them badly (1000), and the Delaunay mesh
+  // the refinement restarts from has that triangle back. The core's
+  // samples cost the distance to the nearest reference of their triangle.
+  const std::vector<glm::dvec2> positions = testing::unitGrid(8, 5);  // sample x * 5 + y
+  std::vector<char> margin(positions.size(), 0);
+  for (size_t i = 0; i < positions.size(); ++i) margin[i] = positions[i].x == 7.0 ? 1 : 0;
+  const std::vector<int> references = {0, 1, 5, 6, 35, 39};
+  const ViewMesh delaunay = ViewMesh::delaunay(positions, references, "test");
+  const int marginTriangle = delaunay.locate(positions[37]);
+  std::vector<Triangle> decimated = delaunay.triangles();
+  decimated.erase(decimated.begin() + marginTriangle);
+  const ViewMesh start(positions, decimated);
+  REQUIRE(start.vertexCount() == 6);  // every reference still has a triangle
+
+  int marginAsked = 0;
+  const FormulaErrors::Formula formula = [&](const Triangle& t, int destination) {
+    if (margin[size_t(destination)]) {
+      ++marginAsked;
+      const bool served = std::any_of(decimated.begin(), decimated.end(),
+                                      [&](const Triangle& d) { return sortedTriangle(d) == sortedTriangle(t); });
+      return served ? 0.0 : 1000.0;
+    }
+    double nearest = 1e9;
+    for (int r : t) nearest = std::min(nearest, glm::length(positions[size_t(r)] - positions[size_t(destination)]));
+    return nearest;
+  };
+  RefinementOptions options = kLocalOnly;
+  options.frozen = margin;
+
+  SUBCASE("judged, the margin's samples make every move from the Delaunay restart lose: nothing is kept") {
+    FormulaErrors errors(formula);
+    const RefinementResult result = refineSelection(positions, decimated, errors, options);
+    CHECK(result.moves.empty());
+    CHECK(result.triangles == decimated);
+  }
+  SUBCASE("weighted 0, the core's samples alone decide: the crowded references spread out") {
+    options.sampleWeights.assign(positions.size(), 1.0);
+    for (size_t i = 0; i < positions.size(); ++i) {
+      if (margin[i]) options.sampleWeights[i] = 0.0;
+    }
+    FormulaErrors errors(formula);
+    const RefinementResult result = refineSelection(positions, decimated, errors, options);
+    REQUIRE(result.moves.size() >= 2);
+    // The objective is the mean over the core's samples that are not
+    // references, and the margin's errors were never asked for.
+    CHECK(marginAsked == 0);
+    double sum = 0.0;
+    int count = 0;
+    for (int i = 0; i < int(positions.size()); ++i) {
+      if (margin[size_t(i)] || std::binary_search(references.begin(), references.end(), i)) continue;
+      sum += formula(sortedTriangle(decimated[size_t(start.locate(positions[size_t(i)]))]), i);
+      ++count;
+    }
+    CHECK(result.objectiveBefore == doctest::Approx(sum / double(count)));
+    CHECK(result.objectiveAfter < 0.8 * result.objectiveBefore);
+    for (const Collapse& move : result.moves) CHECK(!margin[size_t(move.placement)]);
+  }
+}
+
 TEST_CASE("exchange candidates are free samples spread over the area") {
   const std::vector<glm::dvec2> positions = testing::unitGrid(10, 10);  // 1 m apart
   const std::vector<int> references = {0, 11, 22};

@@ -5,6 +5,7 @@
 
 #include "core/geometry/view_mesh.h"
 #include "core/selection/edge_collapse_decimator.h"
+#include "core/selection/reference_selection.h"
 #include "core/selection/selection_refinement.h"
 #include "core/selection/tile_partition.h"
 #include "core/selection/tiled_selection.h"
@@ -155,6 +156,31 @@ TEST_CASE("a tile holds its core and the samples within the margin of it, and th
   for (int i : band1) CHECK((positions[size_t(i)].x == 4.0 || positions[size_t(i)].x == 7.0));
   const std::vector<int> band0 = bandMembers(positions, cores[0], 0.5, cores);
   CHECK(band0.size() == 4);  // the capture's own edge (x = 0) is no seam
+}
+
+TEST_CASE("a tile's samples: all weighted by their share of the whole capture, the core counted and refined, the margin frozen and not judged") {
+  const std::vector<glm::dvec2> positions = testing::unitGrid(16, 4);
+  const std::vector<Tile> tiles = tilesWithMargin(positions, splitIntoCores(positions, 0.0, {.count = 4}), 1.0);
+  std::vector<double> captureWeights(positions.size());
+  for (size_t i = 0; i < positions.size(); ++i) captureWeights[i] = 1.0 + double(i);  // every sample its own
+  const Tile& tile = tiles[1];  // core: columns 4-7; margin: columns 3 and 8
+  SelectionSettings selection;
+  assignTileRoles(tile, captureWeights, selection);
+  REQUIRE(selection.decimation.sampleWeights.size() == tile.samples.size());
+  REQUIRE(selection.refinement.sampleWeights.size() == tile.samples.size());
+  REQUIRE(selection.refinement.frozen.size() == tile.samples.size());
+  REQUIRE(selection.decimation.counted.size() == tile.samples.size());
+  size_t margin = 0;
+  for (size_t local = 0; local < tile.samples.size(); ++local) {
+    const int sample = tile.samples[local];
+    const bool inCore = positions[size_t(sample)].x >= 4.0 && positions[size_t(sample)].x <= 7.0;
+    margin += inCore ? 0 : 1;
+    CHECK(selection.decimation.sampleWeights[local] == captureWeights[size_t(sample)]);
+    CHECK(selection.refinement.sampleWeights[local] == (inCore ? captureWeights[size_t(sample)] : 0.0));
+    CHECK(selection.refinement.frozen[local] == (inCore ? 0 : 1));
+    CHECK(selection.decimation.counted[local] == (inCore ? 1 : 0));
+  }
+  CHECK(margin == 2 * 4);
 }
 
 TEST_CASE("seam rounds: tiles whose steps do not reach each other share a round, and no two of a round do") {

@@ -41,7 +41,7 @@ SelectionRun selectReferences(const Dataset& dataset, DatasetTriangleErrors& err
   const WalkableRegion region = dataset.walkableRegion();
   settings.refinement.region = &region;
   if (settings.decimation.sampleWeights.empty()) settings.decimation.sampleWeights = selectionSampleWeights(dataset);
-  settings.refinement.sampleWeights = settings.decimation.sampleWeights;
+  if (settings.refinement.sampleWeights.empty()) settings.refinement.sampleWeights = settings.decimation.sampleWeights;
   run.initialSamples = initial.vertexCount();
   if (settings.relativeError > 0.0) {
     run.denseMeanError = meanTriangleError(errors, initial.triangles(), quiet);

@@ -53,6 +53,7 @@ public:
     for (int i = 0; i < int(positions_.size()); ++i) {
       if (screenedOnly && !screened_[size_t(i)]) continue;
       if (std::binary_search(references.begin(), references.end(), i)) continue;
+      if (weightOf(i) == 0.0) continue;  // not judged
       hint = mesh.locate(positions_[size_t(i)], hint);
       requests.push_back({sortedTriangle(mesh.triangles()[size_t(hint)]), i});
       if (triangleIds) triangleIds->push_back(hint);

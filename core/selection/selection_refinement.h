@@ -72,7 +72,9 @@ struct RefinementOptions {
   // neighbourhoodRadius of the samples, whatever their spacing.
   std::optional<double> radius;
   int maxPasses = 8;                  // of local moves, each time they run
-  std::vector<double> sampleWeights;  // each sample's share of the area (empty: equal), for the mean
+  // Each sample's share of the area (empty: equal), for the mean; a sample
+  // of weight 0 is not judged (a tile's margin: only its core is kept).
+  std::vector<double> sampleWeights;
   // The walkable region: the references are triangulated keeping only
   // triangles inside it (see ViewMesh::delaunay); null or empty: all.
   const WalkableRegion* region = nullptr;

@@ -187,6 +187,33 @@ TilePlan planTiles(const Dataset& dataset, const TilePlanRequest& request, bool 
   return plan;
 }
 
+void assignTileRoles(const Tile& tile, const std::vector<double>& captureWeights, SelectionSettings& selection) {
+  // The whole capture's area shares: a sample at the margin's outer edge
+  // stands for its own share, not for everything beyond the tile.
+  selection.decimation.sampleWeights = restricted(captureWeights, tile.samples);
+  // The refinement moves only the core's references, among the core's
+  // samples: the margin's references are dropped after this run, so moving
+  // them would cost about as much again as the core (more than the core in
+  // a tile inside the capture, margin on four sides) and change nothing
+  // kept. They stay where the collapses left them, as the context the
+  // core's references near the border are judged with; the seam pass
+  // settles the border. And it judges the core's samples only: the
+  // margin's frozen references serve a margin cut off at the tile's edge
+  // badly whatever the core does (a strip of a room beyond a wall with no
+  // triangle), and judged, that error decided whether the refinement was
+  // kept at all (on the 1,940-sample floor tile 0 dropped all its moves,
+  // leaving a corridor's two ends without references).
+  selection.refinement.sampleWeights = selection.decimation.sampleWeights;
+  selection.refinement.frozen.assign(tile.samples.size(), 0);
+  selection.decimation.counted.assign(tile.samples.size(), 0);
+  for (size_t local = 0; local < tile.samples.size(); ++local) {
+    const bool inCore = isAmong(tile.core.members, tile.samples[local]);
+    selection.refinement.frozen[local] = inCore ? 0 : 1;
+    selection.decimation.counted[local] = inCore ? 1 : 0;  // the target is the core's
+    if (!inCore) selection.refinement.sampleWeights[local] = 0.0;
+  }
+}
+
 TileOutcome runTile(const Dataset& dataset, const TilePlan& plan, int k, size_t layerCacheBytes, bool quiet) {
   TRIWALK_CHECK(k >= 0 && size_t(k) < plan.tiles.size(), "no such tile");
   const auto start = std::chrono::steady_clock::now();
@@ -195,23 +222,7 @@ TileOutcome runTile(const Dataset& dataset, const TilePlan& plan, int k, size_t 
   settings.errors.layerCacheBytes = layerCacheBytes;
   SelectionSettings& selection = settings.selection;
   if (plan.target > 0) selection.decimation.targetSamples = plan.tileTargets[size_t(k)];
-  // The whole capture's area shares: a sample at the margin's outer edge
-  // stands for its own share, not for everything beyond the tile.
-  selection.decimation.sampleWeights = restricted(selectionSampleWeights(dataset), tile.samples);
-  // The refinement moves only the core's references, among the core's
-  // samples: the margin's references are dropped after this run, so moving
-  // them would cost about as much again as the core (more than the core in
-  // a tile inside the capture, margin on four sides) and change nothing
-  // kept. They stay where the collapses left them, as the context the
-  // core's references near the border are judged with; the seam pass
-  // settles the border.
-  selection.refinement.frozen.resize(tile.samples.size());
-  selection.decimation.counted.resize(tile.samples.size());
-  for (size_t local = 0; local < tile.samples.size(); ++local) {
-    const bool inCore = isAmong(tile.core.members, tile.samples[local]);
-    selection.refinement.frozen[local] = inCore ? 0 : 1;
-    selection.decimation.counted[local] = inCore ? 1 : 0;  // the target is the core's
-  }
+  assignTileRoles(tile, selectionSampleWeights(dataset), selection);
 
   const Dataset part = dataset.withSamples(tile.samples);
   DatasetTriangleErrors errors(part, settings.errors, LoadedViews::Samples, quiet);
@@ -336,8 +347,48 @@ std::string describeSeamPass(const StitchResult& result) {
   if (result.isolatedRemovals > 0) {
     text += "; " + std::to_string(result.isolatedRemovals) + " in no view triangle dropped";
   }
+  if (result.pieceRemovals > 0) {
+    text += "; " + std::to_string(result.pieceRemovals) + " dropped from the smallest pieces of the triangulation";
+  }
   return text;
 }
+
+namespace {
+
+// The triangles of the edge-connected piece of mesh with the fewest
+// triangles (of equal ones, the piece of the lowest triangle index).
+std::vector<int> smallestPiece(const ViewMesh& mesh) {
+  std::vector<int> pieceOf(size_t(mesh.triangleCount()), -1);
+  std::vector<int> smallest;
+  for (int seed = 0; seed < mesh.triangleCount(); ++seed) {
+    if (pieceOf[size_t(seed)] >= 0) continue;
+    std::vector<int> piece = {seed};
+    pieceOf[size_t(seed)] = seed;
+    for (size_t next = 0; next < piece.size(); ++next) {
+      for (int edge = 0; edge < 3; ++edge) {
+        const int across = mesh.neighbour(piece[next], edge);
+        if (across >= 0 && pieceOf[size_t(across)] < 0) pieceOf[size_t(across)] = seed, piece.push_back(across);
+      }
+    }
+    if (smallest.empty() || piece.size() < smallest.size()) smallest = std::move(piece);
+  }
+  return smallest;
+}
+
+// Of the candidates (samples among references), the one nearest another
+// reference (ties: the lowest index).
+int nearestToAnother(std::span<const int> candidates, std::span<const int> references,
+                     const std::vector<glm::dvec2>& positions) {
+  std::pair<double, int> best = {std::numeric_limits<double>::infinity(), -1};
+  for (int c : candidates) {
+    for (int other : references) {
+      if (other != c) best = std::min(best, {glm::length(positions[size_t(other)] - positions[size_t(c)]), c});
+    }
+  }
+  return best.second;
+}
+
+}  // namespace
 
 std::vector<int> roundRemovals(long excess, std::span<const long> free, long freeLeft) {
   std::vector<int> removals(free.size(), 0);
@@ -540,26 +591,29 @@ StitchResult stitchTiles(const Dataset& dataset, const TilePlan& plan, const std
   // tile's triangulation (a room cut off with fewer than three). Those in
   // no triangle of the whole serve no view triangle (the untiled
   // decimation drops them the same way), so they go first, the one
-  // nearest another reference first, until the count is met.
-  const long over = referenceCount() - target;
-  if (over > 0) {
-    std::vector<std::pair<double, int>> isolated;  // (distance to the nearest other reference, sample)
+  // nearest another reference first, until the count is met. Below one
+  // reference a room's worth the pieces of the triangulation can end as
+  // lone triangles no step can shrink (the tests' floor of 3 rooms at 12
+  // references: 5 triangles, 15 references): then the smallest piece
+  // gives its reference nearest another, whose samples go to the
+  // best-ranked triangle left, as the untiled decimation's last resort
+  // removes a reference with its fan.
+  while (referenceCount() > target) {
+    std::vector<int> candidates;
     for (int r : references) {
-      if (isAmong(final.vertices(), r)) continue;
-      double nearest = std::numeric_limits<double>::infinity();
-      for (int other : references) {
-        if (other != r) nearest = std::min(nearest, glm::length(positions[size_t(other)] - positions[size_t(r)]));
-      }
-      isolated.push_back({nearest, r});
+      if (!isAmong(final.vertices(), r)) candidates.push_back(r);
     }
-    std::sort(isolated.begin(), isolated.end());
-    const size_t dropped = std::min(size_t(over), isolated.size());
-    for (size_t i = 0; i < dropped; ++i) isReference[size_t(isolated[i].second)] = 0;
-    result.isolatedRemovals = dropped;
-    if (dropped > 0) {
-      references = keptReferences();
-      final = datasetMesh(dataset, references, dataset.manifestPath().string());
+    const bool isolated = !candidates.empty();
+    if (!isolated) {
+      const std::vector<int> piece = smallestPiece(final);
+      for (const int t : piece) candidates.insert(candidates.end(), final.triangles()[size_t(t)].begin(),
+                                                  final.triangles()[size_t(t)].end());
     }
+    const int leaving = nearestToAnother(candidates, references, positions);
+    isReference[size_t(leaving)] = 0;
+    (isolated ? result.isolatedRemovals : result.pieceRemovals) += 1;
+    references = keptReferences();
+    final = datasetMesh(dataset, references, dataset.manifestPath().string());
   }
   result.tiles = plan.tiles.size();
   Selection& selection = result.selection;

@@ -12,6 +12,7 @@
 // selection is the same, byte for byte.
 
 #include "core/io/dataset.h"
+#include "core/selection/reference_selection.h"
 #include "core/selection/selection.h"
 #include "core/selection/tile_partition.h"
 
@@ -74,6 +75,13 @@ double tileMargin(double radius, size_t samples, int target);
 // threshold is relative. Progress unless quiet; Ctrl-C throws Interrupted.
 TilePlan planTiles(const Dataset& dataset, const TilePlanRequest& request, bool quiet);
 
+// What each of a tile's samples is in its own selection (indices local to
+// tile.samples): every one weighted by its share of the whole capture's
+// area (captureWeights, by sample index); the core's counted toward a
+// target, moved and judged by the refinement; the margin's the frozen
+// context, neither counted nor judged.
+void assignTileRoles(const Tile& tile, const std::vector<double>& captureWeights, SelectionSettings& selection);
+
 // Decimates and refines tile k on its views alone; layerCacheBytes bounds
 // its cache of warped layers.
 TileOutcome runTile(const Dataset& dataset, const TilePlan& plan, int k, size_t layerCacheBytes, bool quiet);
@@ -87,6 +95,7 @@ struct StitchResult {
   size_t seamPasses = 0;   // passes after the first that took out some of what was still over the target
   size_t coreRemovals = 0;  // references the cores' own pass took out where the bands could not (empty bands)
   size_t isolatedRemovals = 0;  // references in no view triangle dropped to meet the target when no step could
+  size_t pieceRemovals = 0;     // then references of the smallest pieces of the triangulation, the same way
 };
 
 // "the seam pass (2 rounds) made 3 collapses and 35 moves", and the passes

@@ -19,7 +19,10 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <optional>
+#include <random>
 #include <set>
+#include <tuple>
 
 namespace triwalk {
 
@@ -296,6 +299,87 @@ TEST_CASE("outside every triangle, a position is served by the nearest triangle 
   CHECK_FALSE(withWalls.servingRank(0, corner).blind);
   // In the doorway both see it; the nearer serves.
   CHECK(withWalls.locate({4.1, 1.5}) == 1);
+}
+
+TEST_CASE("outside every triangle, locating takes the triangle that ranking every triangle takes") {
+  // locate measures only the triangles whose bounds could come first; here
+  // every answer is checked against the rule itself (the lowest-numbered
+  // triangle that holds the point, else every triangle ranked by distance,
+  // then sorted vertices: the first whose references see the point, else
+  // the first), on meshes in pieces with holes, at lattice points where
+  // triangles tie, and with a caller's remembered lines of sight.
+  // Three rooms in a row, 0.25 m walls, each joined to the next by a doorway.
+  const auto region = std::make_shared<const WalkableRegion>(
+      std::vector<RegionPolygon>{{{{0, 0}, {4, 0}, {4, 1}, {4.25, 1}, {4.25, 0}, {8.25, 0}, {8.25, 2.5}, {8.5, 2.5},
+                                   {8.5, 0}, {12.5, 0}, {12.5, 4}, {8.5, 4}, {8.5, 3.2}, {8.25, 3.2}, {8.25, 4},
+                                   {4.25, 4}, {4.25, 2}, {4, 2}, {4, 4}, {0, 4}},
+                                  {}}},
+      "three rooms");
+  std::vector<glm::dvec2> positions;
+  for (double x = 0.25; x < 12.5; x += 0.5) {
+    for (double y = 0.25; y < 4.0; y += 0.5) {
+      if (region->contains({x, y})) positions.emplace_back(x, y);
+    }
+  }
+  // Outside every triangle (-1 inside one).
+  const auto byTheRule = [&](const ViewMesh& mesh, glm::dvec2 p) {
+    for (int t = 0; t < mesh.triangleCount(); ++t) {
+      if (mesh.contains(t, p)) return -1;
+    }
+    std::vector<std::tuple<double, Triangle, int>> ranked;
+    for (int t = 0; t < mesh.triangleCount(); ++t) {
+      ranked.emplace_back(mesh.distanceToTriangle(t, p), sortedTriangle(mesh.triangles()[size_t(t)]), t);
+    }
+    std::sort(ranked.begin(), ranked.end());
+    for (const auto& [distance, vertices, t] : ranked) {
+      if (!mesh.servingRank(t, p).blind) return t;
+    }
+    return std::get<2>(ranked.front());
+  };
+  std::mt19937 random(7);
+  size_t outside = 0, blindNearest = 0, tiedNearest = 0;
+  for (int round = 0; round < 6; ++round) {
+    // A sparse random selection: its Delaunay triangles that stay inside
+    // the rooms leave pieces, holes and rooms with no triangle at all.
+    std::vector<int> chosen;
+    for (int i = 0; i < int(positions.size()); ++i) {
+      if (random() % 6 == 0) chosen.push_back(i);
+    }
+    const std::optional<ViewMesh> mesh = ViewMesh::tryDelaunay(positions, chosen, region.get());
+    if (!mesh) continue;
+    std::map<std::pair<int, int>, bool> remembered;
+    for (double x = -0.5; x <= 13.0; x += 0.25) {
+      for (double y = -0.5; y <= 4.5; y += 0.25) {
+        const glm::dvec2 p(x, y);
+        const int expected = byTheRule(*mesh, p);
+        const int point = int(std::lround(4 * x)) * 1000 + int(std::lround(4 * y));
+        const auto sees = [&](int v) {
+          const auto [entry, added] = remembered.try_emplace({v, point}, false);
+          if (added) entry->second = region->lineOfSight(positions[size_t(v)], p);
+          return entry->second;
+        };
+        if (expected < 0) {  // inside: the walk's triangle, or one across a hole from it
+          REQUIRE(mesh->contains(mesh->locate(p), p));
+          REQUIRE(mesh->contains(mesh->locate(p, -1, sees), p));
+        } else {
+          REQUIRE(mesh->locate(p) == expected);
+          REQUIRE(mesh->locate(p, -1, sees) == expected);
+          ++outside;
+          std::vector<double> distances;
+          for (int t = 0; t < mesh->triangleCount(); ++t) distances.push_back(mesh->distanceToTriangle(t, p));
+          const double nearest = *std::min_element(distances.begin(), distances.end());
+          if (distances[size_t(expected)] > nearest) ++blindNearest;
+          if (std::count(distances.begin(), distances.end(), nearest) > 1) ++tiedNearest;
+        }
+      }
+    }
+  }
+  // The cases that matter were met: points outside, nearest triangles
+  // behind a wall, and ties among the nearest.
+  INFO(outside, " outside, ", blindNearest, " behind a wall, ", tiedNearest, " tied");
+  CHECK(outside > 500);
+  CHECK(blindNearest > 20);
+  CHECK(tiedNearest > 20);
 }
 
 TEST_CASE("collinear and too few samples are refused with a clear error") {

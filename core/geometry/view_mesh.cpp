@@ -31,6 +31,11 @@ ViewMesh::ViewMesh(std::vector<glm::dvec2> positions, std::vector<Triangle> tria
   for (size_t s = 0; s < trianglesOfSample_.size(); ++s) {
     if (!trianglesOfSample_[s].empty()) vertices_.push_back(int(s));
   }
+  bounds_.reserve(triangles_.size());
+  for (const Triangle& t : triangles_) {
+    const glm::dvec2 a = position(t[0]), b = position(t[1]), c = position(t[2]);
+    bounds_.push_back({glm::min(glm::min(a, b), c), glm::max(glm::max(a, b), c)});
+  }
 }
 
 namespace {
@@ -127,6 +132,10 @@ double ViewMesh::distanceToTriangle(int triangle, glm::dvec2 point) const {
 }
 
 int ViewMesh::locate(glm::dvec2 point, int hint) const {
+  return locate(point, hint, [&](int v) { return !region_ || region_->lineOfSight(position(v), point); });
+}
+
+int ViewMesh::locate(glm::dvec2 point, int hint, const std::function<bool(int)>& sees) const {
   if (triangles_.empty()) return -1;
   int current = hint >= 0 && hint < triangleCount() ? hint : 0;
   // Visibility walk: step across an edge that separates the triangle from
@@ -147,21 +156,58 @@ int ViewMesh::locate(glm::dvec2 point, int hint) const {
     if (next == -1) break;           // the point is outside the covered area
     current = next;
   }
+  return locateOutside(point, sees);
+}
+
+int ViewMesh::locateOutside(glm::dvec2 point, const std::function<bool(int)>& sees) const {
+  // The walk stops at the boundary; the point may still lie in another
+  // piece of the mesh, or across a hole: the lowest-numbered triangle
+  // that holds it. A triangle whose bounds do not hold the point does not
+  // (orientation is exact).
+  const auto inBounds = [&](const Bounds& b) {
+    return point.x >= b.low.x && point.x <= b.high.x && point.y >= b.low.y && point.y <= b.high.y;
+  };
   for (int t = 0; t < triangleCount(); ++t) {
-    if (contains(t, point)) return t;
+    if (inBounds(bounds_[size_t(t)]) && contains(t, point)) return t;
   }
-  // Outside: in (distance, vertices) order, the first triangle whose
-  // references see the point has the best rank (any seeing triangle beats
-  // every blind one).
-  std::vector<std::tuple<double, Triangle, int>> byDistance;
+  // Outside every triangle: in (distance, vertices) order, the first
+  // triangle whose references see the point has the best rank (any seeing
+  // triangle beats every blind one), and if none sees it, the first. A
+  // refinement locates hundreds of such points in each mesh it tries (the
+  // rim of the region, rooms a tile's edge cut off), so the triangles are
+  // not all measured and sorted: they are taken nearest bounds first, and
+  // measured only while their bounds' distance could still put them
+  // before the nearest measured one. The distance to the bounds, less a
+  // nanometre, never exceeds distanceToTriangle's, so the order, and the
+  // triangle found, are those of measuring them all.
+  using Bound = std::pair<double, int>;
+  using Ranked = std::tuple<double, Triangle, int>;
+  const auto later = [](const auto& a, const auto& b) { return a > b; };  // min-heaps
+  std::vector<Bound> unmeasured;
+  unmeasured.reserve(triangles_.size());
   for (int t = 0; t < triangleCount(); ++t) {
-    byDistance.emplace_back(distanceToTriangle(t, point), sortedTriangle(triangles_[size_t(t)]), t);
+    const Bounds& b = bounds_[size_t(t)];
+    const glm::dvec2 gap = glm::max(glm::max(b.low - point, point - b.high), glm::dvec2(0.0));
+    unmeasured.emplace_back(glm::length(gap) * (1.0 - 1e-9) - 1e-9, t);
   }
-  std::sort(byDistance.begin(), byDistance.end());
-  for (const auto& [distance, vertices, t] : byDistance) {
-    if (!servingRank(t, point, distance).blind) return t;
+  std::make_heap(unmeasured.begin(), unmeasured.end(), later);
+  std::vector<Ranked> measured;
+  int nearest = -1;
+  for (;;) {
+    while (!unmeasured.empty() && (measured.empty() || unmeasured.front().first <= std::get<0>(measured.front()))) {
+      std::pop_heap(unmeasured.begin(), unmeasured.end(), later);
+      const int t = unmeasured.back().second;
+      unmeasured.pop_back();
+      measured.emplace_back(distanceToTriangle(t, point), sortedTriangle(triangles_[size_t(t)]), t);
+      std::push_heap(measured.begin(), measured.end(), later);
+    }
+    if (measured.empty()) return nearest;
+    std::pop_heap(measured.begin(), measured.end(), later);
+    const auto [distance, vertices, t] = measured.back();
+    measured.pop_back();
+    if (nearest < 0) nearest = t;
+    if (!rankTriangle(triangles_[size_t(t)], distance, sees).blind) return t;
   }
-  return std::get<2>(byDistance.front());
 }
 
 ServingRank ViewMesh::servingRank(int triangle, glm::dvec2 point) const {

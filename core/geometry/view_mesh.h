@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <compare>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -87,14 +88,26 @@ public:
   // whose references see the point, else the nearest), ties to the lower
   // sorted vertex triple. -1 only if empty.
   int locate(glm::dvec2 point, int hint = -1) const;
+  // The same, where sees(v) says whether reference v sees the point: a
+  // caller that locates the same points in many meshes remembers the
+  // region's lines of sight instead of tracing them in each.
+  int locate(glm::dvec2 point, int hint, const std::function<bool(int)>& sees) const;
   ServingRank servingRank(int triangle, glm::dvec2 point) const;
   // Distance from point to a triangle (0 inside).
   double distanceToTriangle(int triangle, glm::dvec2 point) const;
 
 private:
+  // Axis-aligned bounds of a triangle, which a point outside them is
+  // outside of, and at least as far from.
+  struct Bounds {
+    glm::dvec2 low, high;
+  };
+  int locateOutside(glm::dvec2 point, const std::function<bool(int)>& sees) const;
+
   std::vector<glm::dvec2> positions_;
   std::vector<Triangle> triangles_;
   std::vector<std::array<int, 3>> neighbours_;
+  std::vector<Bounds> bounds_;  // per triangle
   std::vector<int> vertices_;
   std::vector<std::vector<int>> trianglesOfSample_;
   std::shared_ptr<const WalkableRegion> region_;

@@ -132,7 +132,7 @@ double ViewMesh::distanceToTriangle(int triangle, glm::dvec2 point) const {
 }
 
 int ViewMesh::locate(glm::dvec2 point, int hint) const {
-  return locate(point, hint, [&](int v) { return !region_ || region_->lineOfSight(position(v), point); });
+  return locate(point, hint, [&](int v) { return regionSees(v, point); });
 }
 
 int ViewMesh::locate(glm::dvec2 point, int hint, const std::function<bool(int)>& sees) const {
@@ -211,12 +211,12 @@ int ViewMesh::locateOutside(glm::dvec2 point, const std::function<bool(int)>& se
 }
 
 ServingRank ViewMesh::servingRank(int triangle, glm::dvec2 point) const {
-  return servingRank(triangle, point, distanceToTriangle(triangle, point));
+  return rankTriangle(triangles_[size_t(triangle)], distanceToTriangle(triangle, point),
+                      [&](int v) { return regionSees(v, point); });
 }
 
-ServingRank ViewMesh::servingRank(int triangle, glm::dvec2 point, double distance) const {
-  return rankTriangle(triangles_[size_t(triangle)], distance,
-                      [&](int v) { return !region_ || region_->lineOfSight(position(v), point); });
+bool ViewMesh::regionSees(int reference, glm::dvec2 point) const {
+  return !region_ || region_->lineOfSight(position(reference), point);
 }
 
 }  // namespace triwalk

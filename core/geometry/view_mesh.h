@@ -103,6 +103,8 @@ private:
     glm::dvec2 low, high;
   };
   int locateOutside(glm::dvec2 point, const std::function<bool(int)>& sees) const;
+  // Whether a reference sees point across the region (no region: always).
+  bool regionSees(int reference, glm::dvec2 point) const;
 
   std::vector<glm::dvec2> positions_;
   std::vector<Triangle> triangles_;
@@ -111,8 +113,6 @@ private:
   std::vector<int> vertices_;
   std::vector<std::vector<int>> trianglesOfSample_;
   std::shared_ptr<const WalkableRegion> region_;
-
-  ServingRank servingRank(int triangle, glm::dvec2 point, double distance) const;
 };
 
 }  // namespace triwalk

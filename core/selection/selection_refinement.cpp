@@ -1,5 +1,6 @@
 #include "core/selection/selection_refinement.h"
 
+#include "core/geometry/line_of_sight_table.h"
 #include "core/geometry/view_mesh.h"
 #include "core/selection/sample_pricing.h"
 #include "core/support/errors.h"
@@ -8,12 +9,10 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <map>
-#include <memory>
 #include <optional>
 #include <set>
 #include <tuple>
@@ -42,13 +41,8 @@ class ObjectiveEvaluator {
 public:
   ObjectiveEvaluator(std::span<const glm::dvec2> positions, std::span<const double> weights,
                      const WalkableRegion* region, ReconstructionErrorSource& errors, RefinementResult& result)
-      : positions_(positions.begin(), positions.end()), weights_(weights.begin(), weights.end()),
-        region_(region && !region->empty() ? region : nullptr), errors_(errors), result_(result) {
-    if (region_ && !region_->convex()) {
-      sight_ = std::make_unique<std::atomic<int8_t>[]>(positions_.size() * positions_.size());
-      for (size_t k = 0; k < positions_.size() * positions_.size(); ++k) sight_[k].store(-1, std::memory_order_relaxed);
-    }
-  }
+      : positions_(positions.begin(), positions.end()), weights_(weights.begin(), weights.end()), region_(region),
+        sight_(positions, region), errors_(errors), result_(result) {}
 
   // Every sample's, or only those of the screened subset; triangleIds, if
   // given, receives the index in mesh of each one's triangle.
@@ -61,7 +55,7 @@ public:
       if (screenedOnly && !screened_[size_t(i)]) continue;
       if (std::binary_search(references.begin(), references.end(), i)) continue;
       if (weightOf(i) == 0.0) continue;  // not judged
-      hint = mesh.locate(positions_[size_t(i)], hint, [&](int reference) { return seesEachOther(reference, i); });
+      hint = mesh.locate(positions_[size_t(i)], hint, [&](int reference) { return sight_.sees(reference, i); });
       requests.push_back({sortedTriangle(mesh.triangles()[size_t(hint)]), i});
       if (triangleIds) triangleIds->push_back(hint);
     }
@@ -233,28 +227,12 @@ public:
 private:
   static constexpr Triangle kReference = {-1, -1, -1};  // in currentServing_: a reference, served by none
 
-  // Whether a reference and a sample see each other across the region,
-  // as ViewMesh::locate asks for a sample outside every triangle; traced
-  // once: every mesh tried locates the same samples, and tracing the
-  // lines through the walls each time took a seventh of a seam step.
-  bool seesEachOther(int reference, int sample) const {
-    if (!sight_) return true;  // no walls
-    std::atomic<int8_t>& known = sight_[size_t(reference) * positions_.size() + size_t(sample)];
-    int8_t sees = known.load(std::memory_order_relaxed);
-    if (sees < 0) {
-      sees = region_->lineOfSight(positions_[size_t(reference)], positions_[size_t(sample)]) ? 1 : 0;
-      known.store(sees, std::memory_order_relaxed);  // a race stores the same answer
-    }
-    return sees != 0;
-  }
-
   double weightOf(int sample) const { return weights_.empty() ? 1.0 : weights_[size_t(sample)]; }
 
   std::vector<glm::dvec2> positions_;
   std::vector<double> weights_;
-  const WalkableRegion* region_;  // none when it has no walls to see through
-  // Per (reference, sample): -1 not traced yet, else whether they see each other.
-  std::unique_ptr<std::atomic<int8_t>[]> sight_;
+  const WalkableRegion* region_;
+  LineOfSightTable sight_;  // asked by ViewMesh::locate for samples outside every triangle
   ReconstructionErrorSource& errors_;
   RefinementResult& result_;
   std::map<SampleReconstruction, double> known_;

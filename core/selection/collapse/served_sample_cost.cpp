@@ -16,9 +16,9 @@ ServedSampleCost::ServedSampleCost(const ViewMesh& dense, const CollapseMesh& me
       errors_(errors),
       weights_(std::move(weights)),
       pricedSamples_(pricedSamples),
-      statistics_(statistics) {
+      statistics_(statistics),
+      sight_(mesh.positions(), mesh.region().get()) {
   const size_t samples = size_t(mesh.sampleCount());
-  if (mesh.region() && !mesh.region()->convex()) sight_.assign(samples * samples, -1);
   home_.assign(samples, -1);
   homeError_.assign(samples, 0.0);
   homeRank_.assign(samples, ServingRank{});
@@ -227,13 +227,7 @@ const Triangle& ServedSampleCost::servingTriangle(const CollapsePlan& plan, size
 // As ViewMesh::locate ranks triangles, from the samples' own positions.
 ServingRank ServedSampleCost::servingRank(const Triangle& triangle, int sample) const {
   return rankTriangle(triangle, distanceToTriangle(mesh_.positions(), triangle, mesh_.position(sample)),
-                      [&](int v) { return sight_.empty() || seesEachOther(v, sample); });
-}
-
-bool ServedSampleCost::seesEachOther(int reference, int sample) const {
-  int8_t& known = sight_[size_t(reference) * size_t(mesh_.sampleCount()) + size_t(sample)];
-  if (known < 0) known = mesh_.region()->lineOfSight(mesh_.position(reference), mesh_.position(sample));
-  return known != 0;
+                      [&](int v) { return sight_.sees(v, sample); });
 }
 
 SampleReconstruction ServedSampleCost::request(const CollapsePlan& plan, size_t i) const {

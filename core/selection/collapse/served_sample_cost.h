@@ -10,6 +10,7 @@
 // pricedSamples, a stratified random subset prices it (sample_pricing.h).
 // Because it prices what leaves the mesh, the boundary may shrink.
 
+#include "core/geometry/line_of_sight_table.h"
 #include "core/geometry/walkable_region.h"
 #include "core/selection/collapse/collapse_mesh.h"
 #include "core/selection/collapse/cost_model.h"
@@ -54,7 +55,6 @@ private:
   void choosePricedSamples(int a, int b, CollapsePlan& plan) const;
   const Triangle& servingTriangle(const CollapsePlan& plan, size_t i) const;
   ServingRank servingRank(const Triangle& triangle, int sample) const;
-  bool seesEachOther(int reference, int sample) const;
   double weightOf(int sample) const { return weights_.empty() ? 1.0 : weights_[size_t(sample)]; }
   // The reconstruction giving the error of the plan's i-th served sample.
   SampleReconstruction request(const CollapsePlan& plan, size_t i) const;
@@ -73,9 +73,7 @@ private:
   std::vector<ServingRank> homeRank_;  // {false, 0} inside the home triangle
   std::set<int> outside_;              // samples outside the mesh (where its boundary shrank)
   std::vector<std::vector<int>> served_;
-  // Which samples see each other in the walkable region (filled as asked:
-  // -1 unknown, 0 no, 1 yes; empty for a convex region).
-  mutable std::vector<int8_t> sight_;
+  LineOfSightTable sight_;  // which samples see each other in the walkable region
   std::unordered_map<SampleKey, double, SampleKeyHash> cache_;
 };
 
